@@ -1,0 +1,102 @@
+// SampleSet: the boundary samples of one solid, handed from sampling/ (OCCT)
+// to core/ (no OCCT). Plain arrays only, so core can be driven by synthetic
+// samples and point clouds as well. See DESIGN.md §3.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace cadmedial {
+
+using Vec3 = std::array<double, 3>;
+using Index = std::uint32_t;
+constexpr Index kNoIndex = std::numeric_limits<Index>::max();
+
+// Where a sample lies on the B-rep.
+enum class SampleKind : std::uint8_t {
+  Face = 0,    // interior of a face (owner = face id)
+  Edge = 1,    // on an edge, not at a corner (owner = edge id)
+  Corner = 2,  // on a feature vertex (owner = vertex id)
+};
+
+// Classification of an edge shared by two faces, from the outward normals.
+enum class EdgeKind : std::uint8_t {
+  Smooth = 0,   // tangent-continuous (fillet border, split seam): not a feature
+  Convex = 1,   // interior dihedral angle < 180° - tol
+  Concave = 2,  // interior dihedral angle > 180° + tol
+};
+
+// A convex-edge triplet (seed 002 §4.2.1): s on the edge, sLeft and sRight on
+// the two incident faces, with s-sLeft and s-sRight perpendicular to the edge
+// at s and of equal length. prev / next are the neighbouring samples s', s''
+// along the same sharp edge chain (kNoIndex at a chain end).
+struct Triplet {
+  Index s = kNoIndex;
+  Index sLeft = kNoIndex;
+  Index sRight = kNoIndex;
+  Index prev = kNoIndex;
+  Index next = kNoIndex;
+  std::int32_t edge = -1;  // owner edge id
+};
+
+// One edge of the (split) B-rep and its samples in order along the edge,
+// including the samples at its two end vertices (corner samples, or the shared
+// samples of a pass-through vertex).
+struct EdgeInfo {
+  EdgeKind kind = EdgeKind::Smooth;
+  std::int32_t faceLeft = -1;   // the two incident face ids
+  std::int32_t faceRight = -1;
+  double length = 0.0;
+  double maxDihedralDeviationDeg = 0.0;  // max |180° - dihedral| seen along it
+  std::vector<Index> samples;            // ordered along the edge
+};
+
+// A vertex of the (split) B-rep that is incident to at least one sharp edge.
+struct CornerInfo {
+  Index sample = kNoIndex;    // the sample at the vertex
+  bool isCorner = false;      // a true corner (not a tangent pass-through of one sharp edge chain)
+  bool nonConcave = false;    // no ball inside the solid touches it (DESIGN.md §3)
+  double ballRadius = 0.0;    // corner ball radius (0 if not a corner)
+};
+
+struct SampleSet {
+  // --- samples --------------------------------------------------------------
+  std::vector<Vec3> points;
+  std::vector<SampleKind> kind;      // per point
+  std::vector<std::int32_t> owner;   // per point: face / edge / vertex id by kind
+  std::vector<std::uint8_t> onConvexEdge;        // per point: 1 if on a convex edge (incl. its end vertices)
+  std::vector<std::uint8_t> isNonConcaveCorner;  // per point: 1 if a non-concave corner sample
+
+  std::vector<Triplet> triplets;
+
+  // --- features ---------------------------------------------------------------
+  std::vector<EdgeInfo> edges;        // indexed by edge id
+  std::vector<CornerInfo> vertices;   // indexed by vertex id (only feature vertices are filled)
+
+  // --- boundary reconstruction ----------------------------------------------
+  // Stitched closed triangle surface over `points` (face-by-face constrained
+  // Delaunay, consistently oriented with outward normals).
+  std::vector<std::array<Index, 3>> triangles;
+  std::vector<std::int32_t> triangleFace;  // per triangle: owning face id
+  // Umbrella of sample i = triangles umbrellaTriangles[umbrellaOffsets[i] .. umbrellaOffsets[i+1]).
+  std::vector<Index> umbrellaOffsets;
+  std::vector<Index> umbrellaTriangles;
+
+  // --- context ------------------------------------------------------------------
+  double spacing = 0.0;          // target spacing h used
+  Vec3 bboxMin{0, 0, 0};
+  Vec3 bboxMax{0, 0, 0};
+  int faceCount = 0;
+
+  std::size_t size() const { return points.size(); }
+  double bboxDiagonal() const;
+  // Build umbrellaOffsets/umbrellaTriangles from `triangles`.
+  void buildUmbrellas();
+  // Throws std::runtime_error naming the first inconsistency (sizes, indices).
+  void validate() const;
+};
+
+}  // namespace cadmedial
