@@ -19,7 +19,8 @@ constexpr Index kNoIndex = std::numeric_limits<Index>::max();
 enum class SampleKind : std::uint8_t {
   Face = 0,    // interior of a face (owner = face id)
   Edge = 1,    // on an edge, not at a corner (owner = edge id)
-  Corner = 2,  // on a feature vertex (owner = vertex id)
+  Corner = 2,  // at a B-rep vertex (owner = vertex id); vertices[owner].isCorner
+               // tells whether it is a sharp corner or a smooth / pass-through vertex
 };
 
 // Classification of an edge shared by two faces, from the outward normals.
@@ -54,7 +55,7 @@ struct EdgeInfo {
   std::vector<Index> samples;            // ordered along the edge
 };
 
-// A vertex of the (split) B-rep that is incident to at least one sharp edge.
+// A vertex of the (split) B-rep (every vertex has one sample).
 struct CornerInfo {
   Index sample = kNoIndex;    // the sample at the vertex
   bool isCorner = false;      // a true corner (not a tangent pass-through of one sharp edge chain)
@@ -74,7 +75,7 @@ struct SampleSet {
 
   // --- features ---------------------------------------------------------------
   std::vector<EdgeInfo> edges;        // indexed by edge id
-  std::vector<CornerInfo> vertices;   // indexed by vertex id (only feature vertices are filled)
+  std::vector<CornerInfo> vertices;   // indexed by vertex id
 
   // --- boundary reconstruction ----------------------------------------------
   // Stitched closed triangle surface over `points` (face-by-face constrained

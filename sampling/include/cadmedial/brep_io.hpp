@@ -1,0 +1,45 @@
+// Reading CAD files into OCCT solids, with errors a user can act on.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <TopoDS_Shape.hxx>
+#include <TopoDS_Solid.hxx>
+
+namespace cadmedial {
+
+// What a file held besides its closed solids (for messages and summaries).
+struct ShapeCensus {
+  int solids = 0;
+  int closedSolids = 0;
+  int shells = 0;
+  int openShells = 0;
+  int faces = 0;
+  int looseShells = 0;  // shells not inside a solid
+  int looseFaces = 0;   // faces not inside a shell
+};
+
+struct LoadedModel {
+  std::string path;
+  TopoDS_Shape shape;
+  std::vector<TopoDS_Solid> solids;  // closed solids, in file order
+  ShapeCensus census;
+  std::vector<std::string> warnings;  // e.g. stray open shells that were ignored
+};
+
+// Reads .step/.stp/.iges/.igs/.brep (any case). Throws InputError with a
+// one-line message and exit code: missing/unreadable/empty/corrupt file
+// (kExitUnreadableInput) or no closed solid (kExitNoSolid, saying what was found).
+LoadedModel loadModel(const std::string& path);
+
+// Reads a shape from BREP text (as FreeCAD's exportBrepToString writes it).
+TopoDS_Shape readBrepString(const std::string& brepText);
+
+// Counts solids / shells / faces of a shape.
+ShapeCensus takeCensus(const TopoDS_Shape& shape);
+
+// Closed solids of a shape (a solid whose shells have no free edge).
+std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<std::string>* warnings = nullptr);
+
+}  // namespace cadmedial

@@ -1,0 +1,57 @@
+// Sampling a B-rep solid for CAD_MEDIAL (DESIGN.md §3, seed 002 §4.2.1/§4.2.4).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <TopoDS_Shape.hxx>
+
+#include "cadmedial/sample_set.hpp"
+#include "cadmedial/surface_mesh_checks.hpp"
+
+namespace cadmedial {
+
+struct SamplingParams {
+  double spacing = 0;          // target spacing h in model units; 0 = defaultSpacing()
+  double smoothAngleDeg = 1.0; // edges whose face normals stay within this angle are smooth
+  double minSpacingFraction = 1.0 / 16;  // curvature refinement never goes below h × this
+  unsigned seed = 1;           // face samples are random but reproducible
+};
+
+// Edge and vertex counts of a solid's features.
+struct FeatureCounts {
+  int faces = 0, edges = 0, vertices = 0;
+  int convexEdges = 0, concaveEdges = 0, smoothEdges = 0, seamEdges = 0, degenerateEdges = 0, freeEdges = 0;
+  int mixedSignEdges = 0;
+  double convexLength = 0, concaveLength = 0;
+  int corners = 0, nonConcaveCorners = 0;
+};
+
+struct SamplingReport {
+  FeatureCounts features;  // of the split solid that was sampled
+  std::size_t faceSamples = 0, edgeSamples = 0, vertexSamples = 0, legSamples = 0;
+  std::size_t triplets = 0, tripletsDropped = 0;
+  int facesFailed = 0, orphanSamples = 0, droppedTriangles = 0;
+  SurfaceMeshStats surface;  // the stitched reconstruction
+  double exactArea = 0, exactVolume = 0;  // BRepGProp of the solid
+  double secondsClassify = 0, secondsSample = 0, secondsReconstruct = 0;
+  std::vector<std::string> warnings;
+};
+
+struct SolidSampling {
+  SampleSet samples;
+  SamplingReport report;
+};
+
+// A spacing that gives a usable axis on typical parts in about a second.
+double defaultSpacing(const TopoDS_Shape& solid);
+
+// Samples one closed solid. Throws std::runtime_error if the solid cannot be
+// sampled at all; partial problems are counted in the report.
+SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& params = {});
+
+// Classifies the edges and vertices of a solid as it is (no face splitting):
+// the counts a CAD user sees. Seams and degenerate edges are counted apart.
+FeatureCounts classifyFeatures(const TopoDS_Shape& solid, double smoothAngleDeg = 1.0);
+
+}  // namespace cadmedial

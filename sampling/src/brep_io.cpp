@@ -1,0 +1,178 @@
+#include "cadmedial/brep_io.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <IGESControl_Reader.hxx>
+#include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <STEPControl_Reader.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+
+#include "cadmedial/errors.hpp"
+
+namespace cadmedial {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+// OCCT prints translation chatter on stdout; our stdout is for results.
+void silenceOcctMessages() {
+  static bool done = false;
+  if (done) return;
+  done = true;
+  Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_Printer));
+}
+
+[[noreturn]] void unreadable(const std::string& path, const std::string& why) {
+  throw InputError(kExitUnreadableInput, path + ": " + why);
+}
+
+TopoDS_Shape readStep(const std::string& path) {
+  STEPControl_Reader reader;
+  Interface_Static::SetCVal("xstep.cascade.unit", "MM");
+  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
+    unreadable(path, "not a readable STEP file (syntax error or truncated)");
+  if (reader.NbRootsForTransfer() == 0) unreadable(path, "STEP file holds no shape to transfer");
+  reader.TransferRoots();
+  TopoDS_Shape shape = reader.OneShape();
+  if (shape.IsNull()) unreadable(path, "STEP file holds no geometry that could be translated");
+  return shape;
+}
+
+TopoDS_Shape readIges(const std::string& path) {
+  IGESControl_Reader reader;
+  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
+    unreadable(path, "not a readable IGES file (syntax error or truncated)");
+  reader.TransferRoots();
+  TopoDS_Shape shape = reader.OneShape();
+  if (shape.IsNull()) unreadable(path, "IGES file holds no geometry that could be translated");
+  return shape;
+}
+
+TopoDS_Shape readBrepFile(const std::string& path) {
+  TopoDS_Shape shape;
+  BRep_Builder builder;
+  if (!BRepTools::Read(shape, path.c_str(), builder) || shape.IsNull())
+    unreadable(path, "not a readable BREP file");
+  return shape;
+}
+
+std::string describeCensus(const ShapeCensus& c) {
+  if (c.faces == 0) return "found nothing (no faces)";
+  std::ostringstream s;
+  s << "found ";
+  if (c.solids > 0) s << c.solids << " solid(s) without a closed shell, ";
+  s << c.shells << " shell(s) (" << c.openShells << " open), " << c.faces << " face(s)";
+  return s.str();
+}
+
+}  // namespace
+
+ShapeCensus takeCensus(const TopoDS_Shape& shape) {
+  ShapeCensus c;
+  TopTools_IndexedMapOfShape solids, shells, faces;
+  TopExp::MapShapes(shape, TopAbs_SOLID, solids);
+  TopExp::MapShapes(shape, TopAbs_SHELL, shells);
+  TopExp::MapShapes(shape, TopAbs_FACE, faces);
+  c.solids = solids.Extent();
+  c.shells = shells.Extent();
+  c.faces = faces.Extent();
+  for (int i = 1; i <= shells.Extent(); ++i)
+    if (!BRep_Tool::IsClosed(shells(i))) ++c.openShells;
+  for (TopExp_Explorer e(shape, TopAbs_SHELL, TopAbs_SOLID); e.More(); e.Next()) ++c.looseShells;
+  for (TopExp_Explorer e(shape, TopAbs_FACE, TopAbs_SHELL); e.More(); e.Next()) ++c.looseFaces;
+  return c;
+}
+
+std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<std::string>* warnings) {
+  std::vector<TopoDS_Solid> result;
+  int index = 0;
+  for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next(), ++index) {
+    const TopoDS_Solid& solid = TopoDS::Solid(e.Current());
+    bool closed = true, hasFace = false;
+    for (TopExp_Explorer s(solid, TopAbs_SHELL); s.More(); s.Next()) {
+      hasFace = true;
+      if (!BRep_Tool::IsClosed(s.Current())) closed = false;
+    }
+    if (closed && hasFace) {
+      result.push_back(solid);
+    } else if (warnings) {
+      warnings->push_back("solid " + std::to_string(index) + " skipped: its shell is not closed");
+    }
+  }
+  return result;
+}
+
+TopoDS_Shape readBrepString(const std::string& brepText) {
+  silenceOcctMessages();
+  TopoDS_Shape shape;
+  BRep_Builder builder;
+  std::istringstream in(brepText);
+  try {
+    BRepTools::Read(shape, in, builder);
+  } catch (const Standard_Failure& f) {
+    throw InputError(kExitUnreadableInput, std::string("BREP text could not be read: ") + f.GetMessageString());
+  }
+  if (shape.IsNull()) throw InputError(kExitUnreadableInput, "BREP text holds no shape");
+  return shape;
+}
+
+LoadedModel loadModel(const std::string& path) {
+  silenceOcctMessages();
+  std::error_code ec;
+  if (!fs::exists(path, ec)) unreadable(path, "no such file");
+  if (fs::is_directory(path, ec)) unreadable(path, "is a directory, not a file");
+  {
+    std::ifstream probe(path, std::ios::binary);
+    if (!probe) unreadable(path, "cannot be opened (permission?)");
+  }
+  if (fs::file_size(path, ec) == 0) unreadable(path, "empty file");
+
+  const std::string ext = lowerExtension(path);
+  LoadedModel model;
+  model.path = path;
+  try {
+    if (ext == ".step" || ext == ".stp")
+      model.shape = readStep(path);
+    else if (ext == ".iges" || ext == ".igs")
+      model.shape = readIges(path);
+    else if (ext == ".brep" || ext == ".brp")
+      model.shape = readBrepFile(path);
+    else
+      unreadable(path, "unknown extension '" + ext + "' (expected .step .stp .iges .igs .brep)");
+  } catch (const Standard_Failure& f) {
+    unreadable(path, std::string("reader failed: ") + f.GetMessageString());
+  }
+
+  model.census = takeCensus(model.shape);
+  model.solids = closedSolidsOf(model.shape, &model.warnings);
+  if (model.solids.empty())
+    throw InputError(kExitNoSolid, path + ": no closed solid; " + describeCensus(model.census));
+  if (model.census.looseShells > 0)
+    model.warnings.push_back(std::to_string(model.census.looseShells) +
+                             " shell(s) outside any solid were ignored");
+  if (model.census.looseFaces > 0)
+    model.warnings.push_back(std::to_string(model.census.looseFaces) + " face(s) outside any shell were ignored");
+  return model;
+}
+
+}  // namespace cadmedial

@@ -1,0 +1,246 @@
+// Vertices, sharp and smooth edges, and convex-edge triplets (seed 002 §4.2.1).
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepLProp_CLProps.hxx>
+#include <BRepLProp_SLProps.hxx>
+#include <BRepTools.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
+#include <BRep_Tool.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
+#include <TopoDS.hxx>
+
+#include "sampling_context.hpp"
+
+namespace cadmedial {
+
+namespace {
+constexpr double kCurvatureFraction = 0.2;  // spacing <= this × radius of curvature (chord error ~0.5 %)
+constexpr double kCornerBallFraction = 0.3;  // corner ball <= this × shortest incident edge
+constexpr double kLegFraction = 0.6;         // triplet leg = this × min(edge spacing, corner balls)
+
+double faceMinCurvatureRadius(const TopoDS_Face& face) {
+  BRepAdaptor_Surface surf(face, true);
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  double maxK = 0;
+  constexpr int n = 9;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double u = u0 + (u1 - u0) * (i + 0.5) / n, v = v0 + (v1 - v0) * (j + 0.5) / n;
+      BRepLProp_SLProps props(surf, u, v, 2, 1e-9);
+      if (!props.IsCurvatureDefined()) continue;
+      maxK = std::max({maxK, std::abs(props.MaxCurvature()), std::abs(props.MinCurvature())});
+    }
+  return maxK > 0 ? 1.0 / maxK : 1e300;
+}
+
+double edgeMinCurvatureRadius(const TopoDS_Edge& edge) {
+  BRepAdaptor_Curve curve(edge);
+  double maxK = 0;
+  constexpr int n = 9;
+  for (int i = 0; i < n; ++i) {
+    const double t = curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * (i + 0.5) / n;
+    BRepLProp_CLProps props(curve, t, 2, 1e-9);
+    if (props.IsTangentDefined()) maxK = std::max(maxK, std::abs(props.Curvature()));
+  }
+  return maxK > 0 ? 1.0 / maxK : 1e300;
+}
+
+double clampSpacing(double s, const SamplingContext& ctx) { return std::clamp(s, ctx.minSpacing, ctx.spacing); }
+
+}  // namespace
+
+void computeSpacings(SamplingContext& ctx) {
+  const SolidTopology& topo = ctx.topo;
+  ctx.faceSpacing.resize(topo.faceCount());
+  for (int f = 0; f < topo.faceCount(); ++f)
+    ctx.faceSpacing[f] = clampSpacing(kCurvatureFraction * faceMinCurvatureRadius(topo.face(f)), ctx);
+
+  ctx.edgeSpacing.assign(topo.edgeCount(), ctx.spacing);
+  for (int e = 0; e < topo.edgeCount(); ++e) {
+    if (topo.edgeDegenerate[e]) continue;
+    double s = kCurvatureFraction * edgeMinCurvatureRadius(topo.edge(e));
+    for (int f : topo.edgeFaces[e])
+      if (f >= 0) s = std::min(s, ctx.faceSpacing[f]);
+    ctx.edgeSpacing[e] = clampSpacing(s, ctx);
+  }
+
+  ctx.cornerRadius.assign(topo.vertexCount(), 0.0);
+  for (int v = 0; v < topo.vertexCount(); ++v) {
+    if (!ctx.vertexFeatures[v].isCorner) continue;
+    double r = 1e300;
+    for (int e : topo.vertexEdges[v])
+      r = std::min({r, kCornerBallFraction * ctx.edgeFeatures[e].length, ctx.edgeSpacing[e]});
+    ctx.cornerRadius[v] = r < 1e300 ? r : 0.0;
+  }
+}
+
+void sampleVerticesAndEdges(SamplingContext& ctx, SampleBuilder& builder) {
+  const SolidTopology& topo = ctx.topo;
+  SampleSet& set = builder.set();
+  set.vertices.assign(topo.vertexCount(), {});
+  set.edges.assign(topo.edgeCount(), {});
+  ctx.edgeParams.assign(topo.edgeCount(), {});
+  ctx.vertexSample.assign(topo.vertexCount(), kNoIndex);
+
+  for (int v = 0; v < topo.vertexCount(); ++v) {
+    double nearby = ctx.spacing;
+    for (int e : topo.vertexEdges[v]) nearby = std::min(nearby, ctx.edgeSpacing[e]);
+    const double ball = ctx.cornerRadius[v];
+    const double exclusion = ball > 0 ? ball : 0.75 * nearby;
+    const Index id =
+        builder.add(BRep_Tool::Pnt(TopoDS::Vertex(topo.vertices(v + 1))), SampleKind::Corner, v, exclusion);
+    ctx.vertexSample[v] = id;
+    CornerInfo& info = set.vertices[v];
+    info.sample = id;
+    info.isCorner = ctx.vertexFeatures[v].isCorner;
+    info.nonConcave = ctx.vertexFeatures[v].isCorner && ctx.vertexFeatures[v].nonConcave;
+    info.ballRadius = ball;
+    set.isNonConcaveCorner[id] = info.nonConcave ? 1 : 0;
+  }
+
+  for (int e = 0; e < topo.edgeCount(); ++e) {
+    EdgeInfo& info = set.edges[e];
+    const EdgeFeature& feat = ctx.edgeFeatures[e];
+    info.kind = feat.kind;
+    info.faceLeft = topo.edgeFaces[e][0];
+    info.faceRight = topo.edgeFaces[e][1];
+    info.length = feat.length;
+    info.maxDihedralDeviationDeg = feat.maxDeviationDeg;
+    if (topo.edgeDegenerate[e]) continue;
+
+    BRepAdaptor_Curve curve(topo.edge(e));
+    const auto [v0, v1] = topo.edgeVertices[e];
+    const double t0 = curve.FirstParameter(), t1 = curve.LastParameter();
+    const double a0 = v0 >= 0 ? ctx.cornerRadius[v0] : 0.0, a1 = v1 >= 0 ? ctx.cornerRadius[v1] : 0.0;
+    const double inner = feat.length - a0 - a1;
+    const int segments = std::max(1, static_cast<int>(std::ceil(inner / ctx.edgeSpacing[e] - 1e-9)));
+    const double step = inner / segments;
+    const double leg = kLegFraction * std::min({step, a0 > 0 ? a0 : 1e300, a1 > 0 ? a1 : 1e300});
+    const double exclusion = feat.sharp() ? 1.05 * std::max(leg, 0.75 * step) : 0.75 * step;
+
+    info.samples.push_back(ctx.vertexSample[v0]);
+    ctx.edgeParams[e].push_back(t0);
+    // Ball points (when a0/a1 > 0) and evenly spaced interior samples.
+    const int first = a0 > 0 ? 0 : 1, last = a1 > 0 ? segments : segments - 1;
+    for (int k = first; k <= last; ++k) {
+      const double arc = a0 + k * step;
+      const double t = GCPnts_AbscissaPoint(curve, arc, t0).Parameter();
+      const Index id = builder.add(curve.Value(t), SampleKind::Edge, e, exclusion);
+      info.samples.push_back(id);
+      ctx.edgeParams[e].push_back(t);
+    }
+    info.samples.push_back(ctx.vertexSample[v1]);
+    ctx.edgeParams[e].push_back(t1);
+
+    if (feat.kind == EdgeKind::Convex)
+      for (Index id : info.samples) set.onConvexEdge[id] = 1;
+  }
+}
+
+namespace {
+
+// The point of `face` at distance `leg` from s in the plane through s normal
+// to `tangent`, found by Newton's method in UV from `start`.
+bool solveLegPoint(const BRepAdaptor_Surface& surf, const gp_Pnt& s, const gp_Vec& tangent, double leg,
+                   gp_Pnt2d& uv) {
+  for (int iter = 0; iter < 30; ++iter) {
+    gp_Pnt p;
+    gp_Vec su, sv;
+    surf.D1(uv.X(), uv.Y(), p, su, sv);
+    const gp_Vec d(s, p);
+    const double f1 = d.Dot(tangent), f2 = d.SquareMagnitude() - leg * leg;
+    if (std::abs(f1) < 1e-13 * leg && std::abs(f2) < 1e-13 * leg * leg) return true;
+    const double a = su.Dot(tangent), b = sv.Dot(tangent);
+    const double c = 2 * d.Dot(su), e = 2 * d.Dot(sv);
+    const double det = a * e - b * c;
+    if (std::abs(det) < 1e-300) return false;
+    uv.SetCoord(uv.X() - (f1 * e - b * f2) / det, uv.Y() - (a * f2 - c * f1) / det);
+  }
+  return false;
+}
+
+// UV of the point s + leg * dir on the face's tangent plane (first-order).
+gp_Pnt2d uvStep(const BRepAdaptor_Surface& surf, const gp_Pnt2d& uv, const gp_Vec& dir) {
+  gp_Pnt p;
+  gp_Vec su, sv;
+  surf.D1(uv.X(), uv.Y(), p, su, sv);
+  const double a = su.Dot(su), b = su.Dot(sv), c = sv.Dot(sv);
+  const double r1 = su.Dot(dir), r2 = sv.Dot(dir);
+  const double det = a * c - b * b;
+  if (std::abs(det) < 1e-300) return uv;
+  return gp_Pnt2d(uv.X() + (r1 * c - b * r2) / det, uv.Y() + (a * r2 - b * r1) / det);
+}
+
+}  // namespace
+
+void placeTriplets(SamplingContext& ctx, SampleBuilder& builder) {
+  const SolidTopology& topo = ctx.topo;
+  SampleSet& set = builder.set();
+  std::map<int, std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers;
+  auto classifier = [&](int f) -> BRepTopAdaptor_FClass2d& {
+    auto& slot = classifiers[f];
+    if (!slot) slot = std::make_unique<BRepTopAdaptor_FClass2d>(topo.face(f), 1e-9);
+    return *slot;
+  };
+
+  for (int e = 0; e < topo.edgeCount(); ++e) {
+    if (ctx.edgeFeatures[e].kind != EdgeKind::Convex) continue;
+    const EdgeInfo& info = set.edges[e];
+    const int faces[2] = {info.faceLeft, info.faceRight};
+    BRepAdaptor_Surface surfs[2] = {BRepAdaptor_Surface(topo.face(faces[0]), false),
+                                    BRepAdaptor_Surface(topo.face(faces[1]), false)};
+    const std::size_t n = info.samples.size();
+    for (std::size_t k = 1; k + 1 < n; ++k) {  // ends are vertex samples: no triplet
+      const Index s = info.samples[k];
+      const double t = ctx.edgeParams[e][k];
+      EdgeFaceFrame frames[2] = {edgeFaceFrame(topo.edge(e), topo.face(faces[0]), t),
+                                 edgeFaceFrame(topo.edge(e), topo.face(faces[1]), t)};
+      if (!frames[0].valid || !frames[1].valid) {
+        ++ctx.tripletsDropped;
+        continue;
+      }
+      const gp_Pnt sp(set.points[s][0], set.points[s][1], set.points[s][2]);
+      // Leg: a fraction of the distance to the neighbouring edge samples and balls.
+      const auto& prev = set.points[info.samples[k - 1]];
+      const auto& next = set.points[info.samples[k + 1]];
+      double leg = kLegFraction * std::min(sp.Distance(gp_Pnt(prev[0], prev[1], prev[2])),
+                                           sp.Distance(gp_Pnt(next[0], next[1], next[2])));
+      bool placed = false;
+      for (int attempt = 0; attempt < 4 && !placed; ++attempt, leg *= 0.5) {
+        gp_Pnt2d uv[2];
+        bool ok = true;
+        for (int side = 0; side < 2 && ok; ++side) {
+          uv[side] = uvStep(surfs[side], frames[side].uv, frames[side].intoFace * leg);
+          ok = solveLegPoint(surfs[side], sp, frames[side].tangent, leg, uv[side]) &&
+               classifier(faces[side]).Perform(uv[side]) == TopAbs_IN &&
+               builder.isClear(surfs[side].Value(uv[side].X(), uv[side].Y()), 0.5 * leg, s, false);
+        }
+        if (!ok) continue;
+        Index legs[2];
+        for (int side = 0; side < 2; ++side) {
+          legs[side] = builder.add(surfs[side].Value(uv[side].X(), uv[side].Y()), SampleKind::Face, faces[side],
+                                   1.05 * leg);
+          ctx.recordFaceUv(legs[side], uv[side]);
+        }
+        Triplet trip;
+        trip.s = s;
+        trip.sLeft = legs[0];
+        trip.sRight = legs[1];
+        trip.prev = info.samples[k - 1];
+        trip.next = info.samples[k + 1];
+        trip.edge = e;
+        set.triplets.push_back(trip);
+        placed = true;
+      }
+      if (!placed) ++ctx.tripletsDropped;
+    }
+  }
+}
+
+}  // namespace cadmedial

@@ -1,0 +1,194 @@
+// Per-face reconstruction (seed 002 §4.2.4): constrained Delaunay triangulation
+// of each face's samples in its metric-scaled UV domain, with the boundary
+// samples as constraints and holes removed. Edge samples are shared by index,
+// so the union over faces is one stitched surface.
+#include <array>
+#include <list>
+#include <stdexcept>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepTools.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom2d_Curve.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+
+#include "sampling_context.hpp"
+
+namespace cadmedial {
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+struct DomainInfo {
+  int nesting = -1;
+  bool inDomain() const { return nesting % 2 == 1; }
+};
+// Sample index of a CDT vertex; kNoIndex marks a vertex CGAL created itself.
+struct SampleRef {
+  Index id = kNoIndex;
+};
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<SampleRef, K>;
+using Fbb = CGAL::Triangulation_face_base_with_info_2<DomainInfo, K>;
+using Fb = CGAL::Constrained_triangulation_face_base_2<K, Fbb>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
+
+// Nesting level of every face: 0 outside, +1 each time a constraint is crossed.
+void markDomains(Cdt& cdt) {
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info().nesting = -1;
+  std::list<Cdt::Edge> border;
+  auto flood = [&](Cdt::Face_handle start, int level) {
+    std::list<Cdt::Face_handle> queue{start};
+    while (!queue.empty()) {
+      Cdt::Face_handle fh = queue.front();
+      queue.pop_front();
+      if (fh->info().nesting != -1) continue;
+      fh->info().nesting = level;
+      for (int i = 0; i < 3; ++i) {
+        Cdt::Face_handle nb = fh->neighbor(i);
+        if (nb->info().nesting != -1) continue;
+        if (cdt.is_constrained(Cdt::Edge(fh, i)))
+          border.push_back(Cdt::Edge(fh, i));
+        else
+          queue.push_back(nb);
+      }
+    }
+  };
+  flood(cdt.infinite_face(), 0);
+  while (!border.empty()) {
+    Cdt::Edge e = border.front();
+    border.pop_front();
+    Cdt::Face_handle nb = e.first->neighbor(e.second);
+    if (nb->info().nesting == -1) flood(nb, e.first->info().nesting + 1);
+  }
+}
+
+struct LoopPoint {
+  gp_Pnt2d uv;
+  Index sample;
+};
+
+// Boundary loops of a face in UV, following wire order and edge orientation.
+std::vector<std::vector<LoopPoint>> boundaryLoops(const SamplingContext& ctx, const SampleSet& set, int f) {
+  const TopoDS_Face face = TopoDS::Face(ctx.topo.face(f).Oriented(TopAbs_FORWARD));
+  std::vector<std::vector<LoopPoint>> loops;
+  for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
+    std::vector<LoopPoint> loop;
+    for (BRepTools_WireExplorer we(TopoDS::Wire(w.Current()), face); we.More(); we.Next()) {
+      const TopoDS_Edge& edge = we.Current();
+      const int e = ctx.topo.edges.FindIndex(edge) - 1;
+      double first, last;
+      Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+      if (pcurve.IsNull() || e < 0) continue;
+      std::vector<LoopPoint> pts;
+      if (ctx.topo.edgeDegenerate[e]) {
+        // A pole: one 3D point, a segment in UV. Several UV points, one sample.
+        const auto [v0, v1] = ctx.topo.edgeVertices[e];
+        (void)v1;
+        constexpr int kPolePoints = 8;
+        for (int k = 0; k <= kPolePoints; ++k)
+          pts.push_back({pcurve->Value(first + (last - first) * k / kPolePoints), ctx.vertexSample[v0]});
+      } else {
+        const auto& samples = set.edges[e].samples;
+        for (std::size_t k = 0; k < samples.size(); ++k)
+          pts.push_back({pcurve->Value(ctx.edgeParams[e][k]), samples[k]});
+      }
+      if (we.Orientation() == TopAbs_REVERSED) std::reverse(pts.begin(), pts.end());
+      for (const LoopPoint& p : pts) {
+        if (!loop.empty() && loop.back().sample == p.sample && loop.back().uv.SquareDistance(p.uv) < 1e-24)
+          continue;
+        loop.push_back(p);
+      }
+    }
+    if (loop.size() > 1 && loop.front().sample == loop.back().sample &&
+        loop.front().uv.SquareDistance(loop.back().uv) < 1e-18)
+      loop.pop_back();
+    if (loop.size() >= 3) loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+}  // namespace
+
+ReconstructionReport reconstructFaces(SamplingContext& ctx, SampleSet& set) {
+  ReconstructionReport report;
+  const int nf = ctx.topo.faceCount();
+  std::vector<std::vector<Index>> interior(nf);
+  for (Index i = 0; i < set.points.size(); ++i)
+    if (set.kind[i] == SampleKind::Face) interior[set.owner[i]].push_back(i);
+  std::vector<std::uint8_t> used(set.points.size(), 0);
+
+  for (int f = 0; f < nf; ++f) {
+    const TopoDS_Face& face = ctx.topo.face(f);
+    BRepAdaptor_Surface surf(face, false);
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    // Scale UV by the mean metric so the 2D Delaunay criterion is close to 3D.
+    double su = 0, sv = 0;
+    constexpr int n = 6;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        gp_Pnt p;
+        gp_Vec du, dv;
+        surf.D1(u0 + (u1 - u0) * (i + 0.5) / n, v0 + (v1 - v0) * (j + 0.5) / n, p, du, dv);
+        su += du.Magnitude();
+        sv += dv.Magnitude();
+      }
+    su = su > 0 ? su / (n * n) : 1.0;
+    sv = sv > 0 ? sv / (n * n) : 1.0;
+    auto toPlane = [&](const gp_Pnt2d& uv) { return K::Point_2(uv.X() * su, uv.Y() * sv); };
+
+    try {
+      Cdt cdt;
+      for (const auto& loop : boundaryLoops(ctx, set, f)) {
+        std::vector<Cdt::Vertex_handle> handles;
+        for (const LoopPoint& p : loop) {
+          Cdt::Vertex_handle vh = cdt.insert(toPlane(p.uv));
+          vh->info().id = p.sample;
+          handles.push_back(vh);
+        }
+        for (std::size_t k = 0; k < handles.size(); ++k) {
+          Cdt::Vertex_handle a = handles[k], b = handles[(k + 1) % handles.size()];
+          if (a != b) cdt.insert_constraint(a, b);
+        }
+      }
+      for (Index i : interior[f]) {
+        Cdt::Vertex_handle vh = cdt.insert(toPlane(ctx.faceSampleUv[i]));
+        if (vh->info().id == kNoIndex) vh->info().id = i;
+      }
+      markDomains(cdt);
+      for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh) {
+        if (!fh->info().inDomain()) continue;
+        std::array<Index, 3> tri{fh->vertex(0)->info().id, fh->vertex(1)->info().id, fh->vertex(2)->info().id};
+        if (tri[0] == kNoIndex || tri[1] == kNoIndex || tri[2] == kNoIndex) {
+          throw std::runtime_error("boundary constraints intersect in UV");
+        }
+        if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) {
+          ++report.droppedTriangles;
+          continue;
+        }
+        if (face.Orientation() == TopAbs_REVERSED) std::swap(tri[1], tri[2]);
+        set.triangles.push_back(tri);
+        set.triangleFace.push_back(f);
+        for (Index v : tri) used[v] = 1;
+      }
+    } catch (const std::exception&) {
+      ++report.facesFailed;
+    } catch (const Standard_Failure&) {
+      ++report.facesFailed;
+    }
+  }
+  for (Index i = 0; i < set.points.size(); ++i)
+    if (set.kind[i] == SampleKind::Face && !used[i]) ++report.orphanSamples;
+  return report;
+}
+
+}  // namespace cadmedial

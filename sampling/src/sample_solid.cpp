@@ -1,0 +1,137 @@
+#include <chrono>
+#include <stdexcept>
+
+#include <BRepBndLib.hxx>
+#include <BRepGProp.hxx>
+#include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
+
+#include "cadmedial/sampling.hpp"
+#include "feature_classification.hpp"
+#include "sampling_context.hpp"
+
+namespace cadmedial {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+constexpr double kDefaultSpacingFraction = 1.0 / 40;  // of the bounding-box diagonal
+
+FeatureCounts countFeatures(const SolidTopology& topo, const std::vector<EdgeFeature>& edges,
+                            const std::vector<VertexFeature>& vertices) {
+  FeatureCounts c;
+  c.faces = topo.faceCount();
+  c.edges = topo.edgeCount();
+  c.vertices = topo.vertexCount();
+  for (int e = 0; e < topo.edgeCount(); ++e) {
+    const EdgeFeature& f = edges[e];
+    if (topo.edgeDegenerate[e]) {
+      ++c.degenerateEdges;
+    } else if (f.seam) {
+      ++c.seamEdges;
+    } else if (f.free) {
+      ++c.freeEdges;
+    } else if (f.kind == EdgeKind::Convex) {
+      ++c.convexEdges;
+      c.convexLength += f.length;
+    } else if (f.kind == EdgeKind::Concave) {
+      ++c.concaveEdges;
+      c.concaveLength += f.length;
+    } else {
+      ++c.smoothEdges;
+    }
+    if (f.mixedSign) ++c.mixedSignEdges;
+  }
+  for (const VertexFeature& v : vertices) {
+    if (!v.isCorner) continue;
+    ++c.corners;
+    if (v.nonConcave) ++c.nonConcaveCorners;
+  }
+  return c;
+}
+
+Bnd_Box boundingBox(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::AddOptimal(shape, box, false, false);
+  return box;
+}
+
+}  // namespace
+
+double defaultSpacing(const TopoDS_Shape& solid) {
+  const Bnd_Box box = boundingBox(solid);
+  if (box.IsVoid()) return 1.0;
+  return kDefaultSpacingFraction * std::sqrt(box.SquareExtent());
+}
+
+FeatureCounts classifyFeatures(const TopoDS_Shape& solid, double smoothAngleDeg) {
+  const SolidTopology topo = buildSolidTopology(solid, false);
+  const auto edges = classifyEdges(topo, smoothAngleDeg);
+  return countFeatures(topo, edges, classifyVertices(topo, edges));
+}
+
+SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& params) {
+  SolidSampling out;
+  SamplingReport& report = out.report;
+  SampleSet& set = out.samples;
+
+  auto t = Clock::now();
+  const SolidTopology topo = buildSolidTopology(solid);
+  const auto edgeFeatures = classifyEdges(topo, params.smoothAngleDeg);
+  const auto vertexFeatures = classifyVertices(topo, edgeFeatures);
+  report.features = countFeatures(topo, edgeFeatures, vertexFeatures);
+  if (report.features.freeEdges > 0)
+    report.warnings.push_back(std::to_string(report.features.freeEdges) + " free edge(s): the shell is not closed");
+  report.secondsClassify = secondsSince(t);
+
+  t = Clock::now();
+  SamplingContext ctx(topo, edgeFeatures, vertexFeatures);
+  ctx.spacing = params.spacing > 0 ? params.spacing : defaultSpacing(solid);
+  ctx.minSpacing = ctx.spacing * params.minSpacingFraction;
+  set.spacing = ctx.spacing;
+  set.faceCount = topo.faceCount();
+  const Bnd_Box box = boundingBox(solid);
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  set.bboxMin = {x0, y0, z0};
+  set.bboxMax = {x1, y1, z1};
+
+  computeSpacings(ctx);
+  SampleBuilder builder(set, ctx.spacing);
+  sampleVerticesAndEdges(ctx, builder);
+  const std::size_t featureSamples = set.points.size();
+  placeTriplets(ctx, builder);
+  const std::size_t withLegs = set.points.size();
+  sampleFaceInteriors(ctx, builder, params.seed);
+  report.secondsSample = secondsSince(t);
+  for (SampleKind k : set.kind) {
+    if (k == SampleKind::Edge) ++report.edgeSamples;
+    if (k == SampleKind::Corner) ++report.vertexSamples;
+  }
+  report.legSamples = withLegs - featureSamples;
+  report.faceSamples = set.points.size() - withLegs;
+  report.triplets = set.triplets.size();
+  report.tripletsDropped = ctx.tripletsDropped;
+
+  t = Clock::now();
+  const ReconstructionReport rec = reconstructFaces(ctx, set);
+  set.buildUmbrellas();
+  report.facesFailed = rec.facesFailed;
+  report.orphanSamples = rec.orphanSamples;
+  report.droppedTriangles = rec.droppedTriangles;
+  report.surface = checkSurfaceMesh(set.points, set.triangles);
+  report.secondsReconstruct = secondsSince(t);
+
+  GProp_GProps volume, area;
+  BRepGProp::VolumeProperties(solid, volume);
+  BRepGProp::SurfaceProperties(solid, area);
+  report.exactVolume = volume.Mass();
+  report.exactArea = area.Mass();
+  if (rec.facesFailed > 0)
+    report.warnings.push_back(std::to_string(rec.facesFailed) + " face(s) could not be reconstructed");
+  set.validate();
+  return out;
+}
+
+}  // namespace cadmedial

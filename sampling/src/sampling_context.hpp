@@ -1,0 +1,58 @@
+// State shared by the sampling stages of one solid (internal to sampling/).
+#pragma once
+
+#include <vector>
+
+#include <gp_Pnt2d.hxx>
+
+#include "cadmedial/sample_set.hpp"
+#include "feature_classification.hpp"
+#include "sample_builder.hpp"
+#include "solid_topology.hpp"
+
+namespace cadmedial {
+
+struct SamplingContext {
+  SamplingContext(const SolidTopology& t, const std::vector<EdgeFeature>& e, const std::vector<VertexFeature>& v)
+      : topo(t), edgeFeatures(e), vertexFeatures(v) {}
+
+  const SolidTopology& topo;
+  const std::vector<EdgeFeature>& edgeFeatures;
+  const std::vector<VertexFeature>& vertexFeatures;
+  double spacing = 0;     // global target spacing h
+  double minSpacing = 0;  // floor for curvature refinement
+  std::vector<double> faceSpacing;   // per face
+  std::vector<double> edgeSpacing;   // per edge (target)
+  std::vector<double> cornerRadius;  // per vertex: corner-ball radius (0: no ball)
+  std::vector<Index> vertexSample;   // per vertex: its sample
+  std::vector<std::vector<double>> edgeParams;  // per edge: curve parameter of each sample in SampleSet::edges[e].samples
+  std::vector<gp_Pnt2d> faceSampleUv;  // per sample: UV on its owner face (face samples only)
+  int tripletsDropped = 0;           // convex-edge samples where no equal-leg pair fits on the faces
+
+  void recordFaceUv(Index sample, const gp_Pnt2d& uv) {
+    if (faceSampleUv.size() <= sample) faceSampleUv.resize(sample + 1);
+    faceSampleUv[sample] = uv;
+  }
+};
+
+// Face spacing from curvature, edge spacing from curvature and incident faces,
+// corner-ball radii from incident edge lengths.
+void computeSpacings(SamplingContext& ctx);
+// One sample per vertex, then every non-degenerate edge sampled by arc length
+// between the corner balls of its ends. Fills SampleSet::edges and vertices.
+void sampleVerticesAndEdges(SamplingContext& ctx, SampleBuilder& builder);
+// Equal, perpendicular legs on both faces of every convex-edge sample.
+void placeTriplets(SamplingContext& ctx, SampleBuilder& builder);
+// Poisson-disk samples inside every face, clear of the feature samples.
+void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned seed);
+
+struct ReconstructionReport {
+  int facesFailed = 0;        // faces whose constrained triangulation could not be built
+  int orphanSamples = 0;      // face samples left out of every triangle
+  int droppedTriangles = 0;   // degenerate triangles dropped (pole fans, merged points)
+};
+// Constrained Delaunay triangulation of each face in its (metric-scaled) UV
+// domain, boundary samples as constraints, holes removed; fills triangles.
+ReconstructionReport reconstructFaces(SamplingContext& ctx, SampleSet& set);
+
+}  // namespace cadmedial
