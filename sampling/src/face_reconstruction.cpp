@@ -3,6 +3,9 @@
 // samples as constraints and holes removed. Edge samples are shared by index,
 // so the union over faces is one stitched surface.
 #include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <list>
 #include <stdexcept>
 
@@ -12,6 +15,8 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
@@ -71,6 +76,12 @@ void markDomains(Cdt& cdt) {
   }
 }
 
+double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
 struct LoopPoint {
   gp_Pnt2d uv;
   Index sample;
@@ -99,18 +110,15 @@ std::vector<std::vector<LoopPoint>> boundaryLoops(const SamplingContext& ctx, co
       } else {
         const auto& samples = set.edges[e].samples;
         for (std::size_t k = 0; k < samples.size(); ++k)
-          pts.push_back({pcurve->Value(ctx.edgeParams[e][k]), samples[k]});
+          pts.push_back({uvOnFace(edge, face, ctx.edgeParams[e][k]), samples[k]});
       }
       if (we.Orientation() == TopAbs_REVERSED) std::reverse(pts.begin(), pts.end());
-      for (const LoopPoint& p : pts) {
-        if (!loop.empty() && loop.back().sample == p.sample && loop.back().uv.SquareDistance(p.uv) < 1e-24)
-          continue;
-        loop.push_back(p);
-      }
+      // Consecutive edges share their vertex sample; their pcurves may miss
+      // each other by the edge tolerance in UV, so keep one point per joint.
+      std::size_t start = (!loop.empty() && !pts.empty() && loop.back().sample == pts.front().sample) ? 1 : 0;
+      loop.insert(loop.end(), pts.begin() + start, pts.end());
     }
-    if (loop.size() > 1 && loop.front().sample == loop.back().sample &&
-        loop.front().uv.SquareDistance(loop.back().uv) < 1e-18)
-      loop.pop_back();
+    if (loop.size() > 1 && loop.front().sample == loop.back().sample) loop.pop_back();
     if (loop.size() >= 3) loops.push_back(std::move(loop));
   }
   return loops;
@@ -146,6 +154,14 @@ ReconstructionReport reconstructFaces(SamplingContext& ctx, SampleSet& set) {
     sv = sv > 0 ? sv / (n * n) : 1.0;
     auto toPlane = [&](const gp_Pnt2d& uv) { return K::Point_2(uv.X() * su, uv.Y() * sv); };
 
+    if (std::getenv("CADMEDIAL_DEBUG_FACE") && std::atoi(std::getenv("CADMEDIAL_DEBUG_FACE")) == f) {
+      for (const auto& loop : boundaryLoops(ctx, set, f)) {
+        std::fprintf(stderr, "loop\n");
+        for (const auto& p : loop)
+          std::fprintf(stderr, "%g %g %u kind %d owner %d\n", p.uv.X() * su, p.uv.Y() * sv, p.sample,
+                       int(set.kind[p.sample]), set.owner[p.sample]);
+      }
+    }
     try {
       Cdt cdt;
       for (const auto& loop : boundaryLoops(ctx, set, f)) {
@@ -165,11 +181,14 @@ ReconstructionReport reconstructFaces(SamplingContext& ctx, SampleSet& set) {
         if (vh->info().id == kNoIndex) vh->info().id = i;
       }
       markDomains(cdt);
+      double meshArea = 0;
       for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh) {
         if (!fh->info().inDomain()) continue;
         std::array<Index, 3> tri{fh->vertex(0)->info().id, fh->vertex(1)->info().id, fh->vertex(2)->info().id};
         if (tri[0] == kNoIndex || tri[1] == kNoIndex || tri[2] == kNoIndex) {
-          throw std::runtime_error("boundary constraints intersect in UV");
+          throw std::runtime_error("boundary constraints intersect in UV (surface type " +
+                                   std::to_string(static_cast<int>(surf.GetType())) + ", " +
+                                   std::to_string(boundaryLoops(ctx, set, f).size()) + " loops)");
         }
         if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) {
           ++report.droppedTriangles;
@@ -178,12 +197,22 @@ ReconstructionReport reconstructFaces(SamplingContext& ctx, SampleSet& set) {
         if (face.Orientation() == TopAbs_REVERSED) std::swap(tri[1], tri[2]);
         set.triangles.push_back(tri);
         set.triangleFace.push_back(f);
+        meshArea += triangleArea(set.points[tri[0]], set.points[tri[1]], set.points[tri[2]]);
         for (Index v : tri) used[v] = 1;
       }
-    } catch (const std::exception&) {
+      GProp_GProps props;
+      BRepGProp::SurfaceProperties(face, props);
+      const double error = props.Mass() > 0 ? std::abs(meshArea / props.Mass() - 1.0) : 0.0;
+      if (error > report.worstFaceAreaError) {
+        report.worstFaceAreaError = error;
+        report.worstFace = f;
+      }
+    } catch (const std::exception& e) {
       ++report.facesFailed;
-    } catch (const Standard_Failure&) {
+      report.problems.push_back("face " + std::to_string(f) + ": " + e.what());
+    } catch (const Standard_Failure& e) {
       ++report.facesFailed;
+      report.problems.push_back("face " + std::to_string(f) + ": " + e.GetMessageString());
     }
   }
   for (Index i = 0; i < set.points.size(); ++i)

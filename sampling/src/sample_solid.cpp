@@ -120,6 +120,8 @@ SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& param
   report.facesFailed = rec.facesFailed;
   report.orphanSamples = rec.orphanSamples;
   report.droppedTriangles = rec.droppedTriangles;
+  report.worstFaceAreaError = rec.worstFaceAreaError;
+  report.worstFace = rec.worstFace;
   report.surface = checkSurfaceMesh(set.points, set.triangles);
   report.secondsReconstruct = secondsSince(t);
 
@@ -128,8 +130,13 @@ SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& param
   BRepGProp::SurfaceProperties(solid, area);
   report.exactVolume = volume.Mass();
   report.exactArea = area.Mass();
-  if (rec.facesFailed > 0)
-    report.warnings.push_back(std::to_string(rec.facesFailed) + " face(s) could not be reconstructed");
+  for (const std::string& problem : rec.problems) report.warnings.push_back("reconstruction: " + problem);
+  if (!report.surface.closedManifold())
+    report.warnings.push_back("stitched surface is not a closed manifold: " +
+                              std::to_string(report.surface.boundaryEdges) + " boundary edges, " +
+                              std::to_string(report.surface.nonManifoldEdges) + " non-manifold edges, " +
+                              std::to_string(report.surface.misorientedEdges) + " misoriented edges, " +
+                              std::to_string(report.surface.nonManifoldVertices) + " non-manifold vertices");
   set.validate();
   return out;
 }

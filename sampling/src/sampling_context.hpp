@@ -1,6 +1,7 @@
 // State shared by the sampling stages of one solid (internal to sampling/).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <gp_Pnt2d.hxx>
@@ -50,6 +51,9 @@ struct ReconstructionReport {
   int facesFailed = 0;        // faces whose constrained triangulation could not be built
   int orphanSamples = 0;      // face samples left out of every triangle
   int droppedTriangles = 0;   // degenerate triangles dropped (pole fans, merged points)
+  std::vector<std::string> problems;  // one line per failed face
+  double worstFaceAreaError = 0;      // max over faces of |mesh area / exact area - 1|
+  int worstFace = -1;
 };
 // Constrained Delaunay triangulation of each face in its (metric-scaled) UV
 // domain, boundary samples as constraints, holes removed; fills triangles.

@@ -1,5 +1,8 @@
 #include "solid_topology.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include <BRepAdaptor_Surface.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom2d_Curve.hxx>
@@ -57,6 +60,52 @@ SolidTopology buildSolidTopology(const TopoDS_Shape& solid, bool splitClosedFace
   return topo;
 }
 
+namespace {
+
+// Parameter on the pcurve matching 3D-curve parameter t (see uvOnFace).
+double pcurveParameter(const TopoDS_Edge& edge, const TopoDS_Face& face, const Handle(Geom2d_Curve)& pcurve,
+                       double f2, double l2, double t) {
+  double f3, l3;
+  Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, f3, l3);
+  if (curve.IsNull() || (BRep_Tool::SameParameter(edge) && std::abs(f2 - f3) < 1e-12 && std::abs(l2 - l3) < 1e-12))
+    return t;
+  double s = (l3 > f3) ? f2 + (t - f3) / (l3 - f3) * (l2 - f2) : t;
+  const gp_Pnt target = curve->Value(t);
+  BRepAdaptor_Surface surf(face, false);
+  // Newton on g(s) = |S(pc(s)) - target|^2 / 2 with a finite-difference second derivative.
+  const double h = 1e-7 * std::max(1.0, std::abs(l2 - f2));
+  auto gradient = [&](double x) {
+    gp_Pnt2d uv;
+    gp_Vec2d duv;
+    pcurve->D1(x, uv, duv);
+    gp_Pnt p;
+    gp_Vec su, sv;
+    surf.D1(uv.X(), uv.Y(), p, su, sv);
+    return gp_Vec(target, p).Dot(su * duv.X() + sv * duv.Y());
+  };
+  for (int iter = 0; iter < 20; ++iter) {
+    const double g = gradient(s);
+    const double dg = (gradient(s + h) - gradient(s - h)) / (2 * h);
+    if (!(std::abs(dg) > 1e-300)) break;
+    const double next = std::clamp(s - g / dg, std::min(f2, l2), std::max(f2, l2));
+    if (std::abs(next - s) < 1e-14 * std::max(1.0, std::abs(s))) {
+      s = next;
+      break;
+    }
+    s = next;
+  }
+  return s;
+}
+
+}  // namespace
+
+gp_Pnt2d uvOnFace(const TopoDS_Edge& edge, const TopoDS_Face& face, double t) {
+  double f2, l2;
+  Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, f2, l2);
+  if (pcurve.IsNull()) return gp_Pnt2d(0, 0);
+  return pcurve->Value(pcurveParameter(edge, face, pcurve, f2, l2, t));
+}
+
 gp_Vec outwardNormalAt(const TopoDS_Face& face, const gp_Pnt2d& uv) {
   BRepAdaptor_Surface surf(face, false);
   gp_Pnt p;
@@ -91,7 +140,8 @@ EdgeFaceFrame edgeFaceFrame(const TopoDS_Edge& edge, const TopoDS_Face& face, do
 
   gp_Pnt2d uv;
   gp_Vec2d duv;
-  pcurve->D1(t, uv, duv);
+  pcurve->D1(pcurveParameter(edge, face, pcurve, f2, l2, t), uv, duv);
+  if ((l2 - f2) * (l3 - f3) < 0) duv.Reverse();  // pcurve runs against the 3D curve
   gp_Pnt p3;
   gp_Vec tangent;
   curve->D1(t, p3, tangent);

@@ -48,6 +48,11 @@ struct EdgeFaceFrame {
 };
 EdgeFaceFrame edgeFaceFrame(const TopoDS_Edge& edge, const TopoDS_Face& face, double t);
 
+// UV on `face` of the point at 3D-curve parameter t of `edge`. Uses the
+// pcurve directly when the edge is SameParameter, otherwise maps t linearly
+// onto the pcurve range and refines it so the point matches the 3D curve.
+gp_Pnt2d uvOnFace(const TopoDS_Edge& edge, const TopoDS_Face& face, double t);
+
 // Outward normal of `face` (as oriented in the solid) at uv.
 gp_Vec outwardNormalAt(const TopoDS_Face& face, const gp_Pnt2d& uv);
 

@@ -32,6 +32,8 @@ struct SamplingReport {
   std::size_t faceSamples = 0, edgeSamples = 0, vertexSamples = 0, legSamples = 0;
   std::size_t triplets = 0, tripletsDropped = 0;
   int facesFailed = 0, orphanSamples = 0, droppedTriangles = 0;
+  double worstFaceAreaError = 0;  // max over faces of |reconstructed area / exact area - 1|
+  int worstFace = -1;
   SurfaceMeshStats surface;  // the stitched reconstruction
   double exactArea = 0, exactVolume = 0;  // BRepGProp of the solid
   double secondsClassify = 0, secondsSample = 0, secondsReconstruct = 0;
