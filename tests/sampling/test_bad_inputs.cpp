@@ -1,0 +1,124 @@
+// Bad files give the documented error (library: InputError with a code; CLI:
+// one line on stderr and the exit code), never a crash or a partial output.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "cadmedial/brep_io.hpp"
+#include "cadmedial/errors.hpp"
+#include "cadmedial/sampling.hpp"
+#include "model_fixtures.hpp"
+
+namespace cadmedial {
+namespace {
+namespace fs = std::filesystem;
+
+class BadInputs : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("cadmedial_bad_inputs_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string write(const std::string& name, const std::string& content) {
+    const fs::path p = dir_ / name;
+    std::ofstream(p, std::ios::binary) << content;
+    return p.string();
+  }
+  std::string truncatedBox() {
+    std::ifstream in(std::string(CADMEDIAL_MODELS_DIR) + "/box.step", std::ios::binary);
+    std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return write("truncated.step", all.substr(0, all.size() / 2));
+  }
+  // Runs the CLI; returns its exit code and leaves stderr in `err`.
+  int runCli(const std::string& model, std::string& err) {
+    const fs::path out = dir_ / "out", errFile = dir_ / "stderr.txt";
+    const std::string cmd = std::string(CADMEDIAL_CLI) + " sample '" + model + "' -o '" + out.string() +
+                            "' >/dev/null 2>'" + errFile.string() + "'";
+    const int status = std::system(cmd.c_str());
+    std::ifstream in(errFile);
+    err.assign((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  static ExitCode codeOf(const std::string& path) {
+    try {
+      loadModel(path);
+    } catch (const InputError& e) {
+      return e.code();
+    }
+    return kExitOk;
+  }
+  fs::path dir_;
+};
+
+TEST_F(BadInputs, MissingEmptyTextAndTruncatedFilesAreUnreadable) {
+  EXPECT_EQ(codeOf((dir_ / "nope.step").string()), kExitUnreadableInput);
+  EXPECT_EQ(codeOf(write("empty.step", "")), kExitUnreadableInput);
+  EXPECT_EQ(codeOf(write("text.step", "this is not a STEP file\njust text\n")), kExitUnreadableInput);
+  EXPECT_EQ(codeOf(write("text.iges", "not IGES either\n")), kExitUnreadableInput);
+  EXPECT_EQ(codeOf(write("text.brep", "not BREP\n")), kExitUnreadableInput);
+  EXPECT_EQ(codeOf(write("model.obj", "v 0 0 0\n")), kExitUnreadableInput);
+  EXPECT_EQ(codeOf(dir_.string()), kExitUnreadableInput);
+  const ExitCode truncated = codeOf(truncatedBox());
+  EXPECT_TRUE(truncated == kExitUnreadableInput || truncated == kExitNoSolid) << truncated;
+}
+
+TEST_F(BadInputs, ExtensionIsCaseInsensitive) {
+  std::ifstream in(std::string(CADMEDIAL_MODELS_DIR) + "/box.step", std::ios::binary);
+  std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(loadModel(write("BOX.STEP", all)).solids.size(), 1u);
+  EXPECT_EQ(loadModel(write("box.Stp", all)).solids.size(), 1u);
+}
+
+TEST_F(BadInputs, CliPrintsOneLineAndTheDocumentedExitCode) {
+  std::string err;
+  EXPECT_EQ(runCli((dir_ / "missing.step").string(), err), kExitUnreadableInput);
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_NE(err.find("no such file"), std::string::npos) << err;
+  EXPECT_EQ(runCli(write("empty.stp", ""), err), kExitUnreadableInput);
+  EXPECT_EQ(runCli(write("text.step", "hello\n"), err), kExitUnreadableInput);
+  const int truncated = runCli(truncatedBox(), err);
+  EXPECT_TRUE(truncated == kExitUnreadableInput || truncated == kExitNoSolid) << truncated << err;
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "solid_0" / "samples.ply"));
+}
+
+TEST_F(BadInputs, ShellOnlyAndSurfaceOnlyFilesSayWhatTheyHold) {
+  const std::string dir = test::publicModelsDir();
+  if (dir.empty()) GTEST_SKIP() << "../shared/models/public not present";
+  for (const char* name : {"belever_gear.step", "bearing.iges"}) {
+    try {
+      loadModel(dir + "/" + name);
+      ADD_FAILURE() << name << " should have no closed solid";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.code(), kExitNoSolid) << name;
+      EXPECT_NE(std::string(e.what()).find("face"), std::string::npos) << e.what();
+    }
+    std::string err;
+    EXPECT_EQ(runCli(dir + "/" + name, err), kExitNoSolid) << err;
+  }
+}
+
+TEST_F(BadInputs, AssembliesAndMultiSolidFilesSampleEverySolid) {
+  const std::string dir = test::publicModelsDir();
+  if (dir.empty()) GTEST_SKIP() << "../shared/models/public not present";
+  const struct {
+    const char* file;
+    std::size_t solids;
+  } cases[] = {{"as1_pe_203.stp", 18}, {"red_cube_blue_cylinder.step", 2}, {"nist_ctc_05_asme1_rd.stp", 1}};
+  for (const auto& c : cases) {
+    const LoadedModel model = loadModel(dir + "/" + c.file);
+    EXPECT_EQ(model.solids.size(), c.solids) << c.file;
+    for (const auto& solid : model.solids) {
+      const SolidSampling r = sampleSolid(solid);
+      EXPECT_GT(r.samples.size(), 0u) << c.file;
+      EXPECT_TRUE(r.report.surface.closedManifold()) << c.file;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cadmedial
