@@ -1,5 +1,6 @@
 // Vertices, sharp and smooth edges, and convex-edge triplets (seed 002 §4.2.1).
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -165,6 +166,17 @@ bool solveLegPoint(const BRepAdaptor_Surface& surf, const gp_Pnt& s, const gp_Ve
   return false;
 }
 
+// A reproducible number in [0, 1) per (edge, sample): a small integer hash.
+double legJitter(unsigned edge, unsigned k) {
+  std::uint32_t x = edge * 2654435761u ^ (k + 0x9e3779b9u + (edge << 6) + (edge >> 2));
+  x ^= x >> 16;
+  x *= 0x7feb352du;
+  x ^= x >> 15;
+  x *= 0x846ca68bu;
+  x ^= x >> 16;
+  return (x & 0xFFFFFF) / static_cast<double>(0x1000000);
+}
+
 // UV of the point s + leg * dir on the face's tangent plane (first-order).
 gp_Pnt2d uvStep(const BRepAdaptor_Surface& surf, const gp_Pnt2d& uv, const gp_Vec& dir) {
   gp_Pnt p;
@@ -209,8 +221,13 @@ void placeTriplets(SamplingContext& ctx, SampleBuilder& builder) {
       // Leg: a fraction of the distance to the neighbouring edge samples and balls.
       const auto& prev = set.points[info.samples[k - 1]];
       const auto& next = set.points[info.samples[k + 1]];
-      double leg = kLegFraction * std::min(sp.Distance(gp_Pnt(prev[0], prev[1], prev[2])),
-                                           sp.Distance(gp_Pnt(next[0], next[1], next[2])));
+      // Legs vary by up to -10 % from triplet to triplet (deterministically):
+      // equal legs on consecutive triplets of a straight edge would make
+      // rectangles s s' s'_l s_l, four cocircular coplanar samples whose flat
+      // Delaunay cells have no circumcenter.
+      const double jitter = 1.0 - 0.1 * legJitter(static_cast<unsigned>(e), static_cast<unsigned>(k));
+      double leg = jitter * kLegFraction *
+                   std::min(sp.Distance(gp_Pnt(prev[0], prev[1], prev[2])), sp.Distance(gp_Pnt(next[0], next[1], next[2])));
       bool placed = false;
       for (int attempt = 0; attempt < 4 && !placed; ++attempt, leg *= 0.5) {
         gp_Pnt2d uv[2];

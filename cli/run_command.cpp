@@ -1,0 +1,97 @@
+// CGAL headers must come before OCCT's: OCCT defines a `Handle` macro that
+// breaks CGAL's own `Handle` templates.
+#include "cadmedial/medial.hpp"
+#include "run_command.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include <BRepClass3d_SolidClassifier.hxx>
+
+#include "atomic_file.hpp"
+#include "cadmedial/brep_io.hpp"
+#include "cadmedial/errors.hpp"
+#include "cadmedial/sampling.hpp"
+#include "medial_summary.hpp"
+#include "medial_writers.hpp"
+#include "report_json.hpp"
+
+namespace cadmedial {
+
+namespace {
+// TEMPORARY until medial_ply_io lands.
+void writeMedialPlyFile(const std::string& path, const MedialComplex& c) {
+  writeFileAtomically(path, [&](std::ofstream& out) {
+    out << "ply\nformat ascii 1.0\nelement vertex " << c.vertices.size()
+        << "\nproperty double x\nproperty double y\nproperty double z\nproperty double radius\nelement face "
+        << c.polygonCount() << "\nproperty list uchar int vertex_indices\nproperty int sheet\nproperty uchar provenance\nend_header\n";
+    out.precision(17);
+    for (std::size_t i = 0; i < c.vertices.size(); ++i)
+      out << c.vertices[i][0] << ' ' << c.vertices[i][1] << ' ' << c.vertices[i][2] << ' ' << c.radius[i] << '\n';
+    for (std::size_t p = 0; p < c.polygonCount(); ++p) {
+      out << c.polygonSize(p);
+      for (Index k = c.polygonOffsets[p]; k < c.polygonOffsets[p + 1]; ++k) out << ' ' << c.polygonVertices[k];
+      out << ' ' << c.sheet[p] << ' ' << int(c.provenance[p]) << '\n';
+    }
+  });
+}
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+}  // namespace
+
+int runRunCommand(const RunCommandOptions& options) {
+  auto t = Clock::now();
+  const LoadedModel model = loadModel(options.model);
+  const double secondsRead = secondsSince(t);
+  for (const std::string& w : model.warnings) std::cerr << "warning: " << options.model << ": " << w << "\n";
+  std::filesystem::create_directories(options.outDir);
+
+  std::printf("%-6s %8s %9s %9s %8s %7s %6s %6s %9s %8s\n", "solid", "samples", "cells", "polygons", "sheets", "b0/b1",
+              "walk", "oracle", "notDelny", "seconds");
+  for (std::size_t i = 0; i < model.solids.size(); ++i) {
+    SamplingParams sampling;
+    sampling.spacing = options.spacing;
+    const SolidSampling sampled = sampleSolid(model.solids[i], sampling);
+
+    InsideOracle oracle;
+    BRepClass3d_SolidClassifier classifier(model.solids[i]);
+    if (options.checkWithOracle)
+      oracle = [&classifier](const Vec3& p) {
+        classifier.Perform(gp_Pnt(p[0], p[1], p[2]), 1e-9);
+        return classifier.State() == TopAbs_IN;
+      };
+    const MedialResult medial = computeCadMedial(sampled.samples, options.params, oracle);
+
+    t = Clock::now();
+    const std::string dir = (std::filesystem::path(options.outDir) / ("solid_" + std::to_string(i))).string();
+    std::filesystem::create_directories(dir);
+    writeMedialPlyFile(dir + "/medial.ply", medial);
+    writeFileAtomically(dir + "/medial.obj", [&](std::ofstream& out) { writeMedialObj(out, medial); });
+    writeFileAtomically(dir + "/medial.ma", [&](std::ofstream& out) { writeMedialMa(out, medial); });
+    const double secondsWrite = secondsSince(t);
+
+    nlohmann::json summary = medialSummaryJson(sampled.report, medial, options.params);
+    summary["model"] = options.model;
+    summary["solid"] = i;
+    summary["spacing"] = sampled.samples.spacing;
+    summary["seconds"]["read"] = secondsRead;
+    summary["seconds"]["write"] = secondsWrite;
+    writeFileAtomically(dir + "/summary.json", [&](std::ofstream& out) { out << summary.dump(2) << "\n"; });
+
+    const double seconds = sampled.report.secondsClassify + sampled.report.secondsSample +
+                           sampled.report.secondsReconstruct + medial.times.total + secondsWrite;
+    char betti[32];
+    std::snprintf(betti, sizeof betti, "%lld/%lld", medial.topology.beta0, medial.topology.beta1);
+    std::printf("%-6zu %8zu %9zu %9zu %8zu %7s %6zu %6zu %9zu %8.2f\n", i, sampled.samples.size(),
+                medial.counts.delaunayCells, medial.polygonCount(), medial.sheetCount, betti,
+                medial.counts.oracleChecked, medial.counts.oracleDisagreements, medial.counts.tripletsNotDelaunay,
+                seconds);
+    for (const std::string& w : sampled.report.warnings) std::cerr << "warning: solid " << i << ": " << w << "\n";
+  }
+  std::printf("outputs in %s (per solid: medial.ply, medial.obj, medial.ma, summary.json)\n", options.outDir.c_str());
+  return kExitOk;
+}
+
+}  // namespace cadmedial

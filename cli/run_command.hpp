@@ -1,0 +1,21 @@
+#pragma once
+
+#include <string>
+
+#include "cadmedial/medial_params.hpp"
+
+namespace cadmedial {
+
+struct RunCommandOptions {
+  std::string model;
+  std::string outDir;
+  double spacing = 0;
+  MedialParams params = MedialParams::cad();
+  bool checkWithOracle = true;  // count walk-vs-exact-classifier disagreements
+};
+
+// `cadmedial run`: per solid, medial.ply, medial.obj, medial.ma and
+// summary.json under OUTDIR/solid_<i>/, and a summary line on stdout.
+int runRunCommand(const RunCommandOptions& options);
+
+}  // namespace cadmedial

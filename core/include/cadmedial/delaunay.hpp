@@ -1,0 +1,97 @@
+// Delaunay triangulation of the samples and its dual Voronoi diagram
+// (DESIGN.md §4.1). Built once, reused by every later stage (facet selection,
+// forced triangles, walk, pair-mesh).
+//
+// * CGAL Delaunay_triangulation_3 over Exact_predicates_inexact_constructions_kernel.
+// * Vertex info = sample index (the lowest sample index at that location).
+// * Cell info = cell id, dense 0..cellCount()-1 over ALL cells (infinite ones
+//   included). A Voronoi vertex is identified by its cell id, never by its
+//   coordinates: exactly cospherical samples give many cells with one
+//   circumcenter, and they stay distinct Voronoi vertices here.
+// * Circumcenter / circumradius per cell, computed once into side arrays
+//   (NaN / +inf for infinite cells).
+// * Duplicate input points are merged by CGAL; every sample still maps to the
+//   vertex at its location (canonicalSample), and duplicateCount() says how many
+//   samples were merged.
+#pragma once
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Delaunay_triangulation_cell_base_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <vector>
+
+#include "cadmedial/sample_set.hpp"
+
+namespace cadmedial {
+
+class DelaunayVoronoi {
+ public:
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Point = Kernel::Point_3;
+  using Vb = CGAL::Triangulation_vertex_base_with_info_3<Index, Kernel>;
+  using Cb = CGAL::Triangulation_cell_base_with_info_3<Index, Kernel,
+                                                       CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
+  using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
+  using Triangulation = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
+  using Vertex_handle = Triangulation::Vertex_handle;
+  using Cell_handle = Triangulation::Cell_handle;
+  using Edge = Triangulation::Edge;
+  using Facet = Triangulation::Facet;
+
+  // Builds the triangulation (points inserted as one range, spatially sorted
+  // by CGAL) and the per-cell side arrays. Throws std::invalid_argument on
+  // non-finite coordinates.
+  explicit DelaunayVoronoi(const std::vector<Vec3>& points);
+
+  DelaunayVoronoi(const DelaunayVoronoi&) = delete;
+  DelaunayVoronoi& operator=(const DelaunayVoronoi&) = delete;
+
+  const Triangulation& triangulation() const { return dt_; }
+  int dimension() const { return dt_.dimension(); }
+  std::size_t sampleCount() const { return canonical_.size(); }
+
+  // --- cells = Voronoi vertices -------------------------------------------
+  std::size_t cellCount() const { return cells_.size(); }
+  std::size_t finiteCellCount() const { return finiteCells_; }
+  static Index cellId(Cell_handle c) { return c->info(); }
+  Cell_handle cell(Index id) const { return cells_[id]; }
+  bool isInfinite(Index id) const { return infinite_[id] != 0; }
+  const Vec3& circumcenter(Index id) const { return center_[id]; }
+  double circumradius(Index id) const { return radius_[id]; }
+  // Sample index of local vertex i of a cell, kNoIndex for the infinite vertex.
+  Index cellSample(Index id, int i) const {
+    Vertex_handle v = cells_[id]->vertex(i);
+    return dt_.is_infinite(v) ? kNoIndex : v->info();
+  }
+  bool cellHasSample(Index id, Index sample) const;
+
+  // --- samples = Delaunay vertices ----------------------------------------
+  // The vertex at sample i's location (shared by duplicates).
+  Vertex_handle vertex(Index sample) const { return vertex_[sample]; }
+  // The sample index stored on that vertex: the lowest index among the samples
+  // at that location (i itself unless i duplicates an earlier sample).
+  Index canonicalSample(Index sample) const { return canonical_[sample]; }
+  std::size_t duplicateCount() const { return duplicates_; }
+
+  // Times in seconds: CGAL insertion alone, and the side arrays.
+  double delaunaySeconds() const { return delaunaySeconds_; }
+  double sideArraySeconds() const { return sideArraySeconds_; }
+
+ private:
+  Triangulation dt_;
+  std::vector<Cell_handle> cells_;
+  std::vector<std::uint8_t> infinite_;
+  std::vector<Vec3> center_;
+  std::vector<double> radius_;
+  std::vector<Vertex_handle> vertex_;
+  std::vector<Index> canonical_;
+  std::size_t duplicates_ = 0;
+  std::size_t finiteCells_ = 0;
+  double delaunaySeconds_ = 0;
+  double sideArraySeconds_ = 0;
+};
+
+}  // namespace cadmedial

@@ -1,0 +1,86 @@
+// CAD_MEDIAL (seeds 000 and 002, DESIGN.md §4): the inner medial axis of a
+// solid from its SampleSet, as an indexed polygon complex split into sheets.
+//
+//   MedialResult r = computeCadMedial(samples, MedialParams::cad(), oracle);
+//
+// The stages are public for tests and benchmarks, each in its own header:
+//   delaunay.hpp         DelaunayVoronoi               (§4.1)
+//   umbrella.hpp         computeUmbrellaData           (§4.2, per-sample data)
+//   facet_selection.hpp  selectFacetsByAngleAndRatio   (§4.2)
+//   forced_triangles.hpp procConvexEdges, procNonconcaveCorners (§4.3, §4.4)
+//   inner_outer.hpp      separateInnerOuter            (§4.5)
+//   polygon_complex.hpp  buildInnerComplex, segmentSheets, computeTopology (§4.6)
+#pragma once
+
+#include "cadmedial/delaunay.hpp"
+#include "cadmedial/facet_selection.hpp"
+#include "cadmedial/forced_triangles.hpp"
+#include "cadmedial/inner_outer.hpp"
+#include "cadmedial/medial_params.hpp"
+#include "cadmedial/polygon_complex.hpp"
+#include "cadmedial/sample_set.hpp"
+#include "cadmedial/umbrella.hpp"
+
+namespace cadmedial {
+
+struct MedialCounts {
+  std::size_t samples = 0;
+  std::size_t duplicateSamples = 0;       // merged by the triangulation
+  std::size_t delaunayCells = 0;          // finite cells (= Voronoi vertices)
+  std::size_t delaunayEdges = 0;          // finite edges examined
+  std::size_t selectedFacets = 0;         // by Angle/Ratio, bounded and unbounded
+  std::size_t unboundedFacets = 0;
+  std::size_t innerFacets = 0;
+  std::size_t outerFacets = 0;
+  std::size_t convexEdgeTriangles = 0;
+  std::size_t convexFillTriangles = 0;
+  std::size_t cornerTriangles = 0;        // all; outerCornerTriangles of them were dropped
+  std::size_t outerCornerTriangles = 0;
+  std::size_t tripletsNotDelaunay = 0;
+  std::size_t tripletsOnHull = 0;
+  std::size_t degenerateUmbrellaTriangles = 0;
+  std::size_t samplesWithoutUmbrella = 0;
+  std::size_t sheets = 0;
+  std::size_t walkBlockedCrossings = 0;
+  std::size_t oracleChecked = 0;          // bounded selected facets checked by the inside oracle
+  std::size_t oracleDisagreements = 0;    // ... whose walk label != oracle at their centroid
+  std::size_t oracleForcedChecked = 0;    // forced triangles checked (reported apart: samples on the
+  std::size_t oracleForcedDisagreements = 0;  // boundary make their centroids borderline)
+};
+
+struct MedialTimes {  // seconds
+  double delaunay = 0;     // CGAL insertion alone: the floor of DESIGN.md §7
+  double voronoi = 0;      // cell ids, circumcenters, sample -> vertex map
+  double umbrellas = 0;
+  double selection = 0;
+  double convexEdges = 0;
+  double corners = 0;
+  double walk = 0;
+  double oracle = 0;       // not part of the pipeline proper
+  double complex = 0;
+  double sheets = 0;
+  double topology = 0;
+  double total = 0;        // the whole pipeline incl. Delaunay, without the oracle
+};
+
+struct MedialResult : MedialComplex {
+  ComplexTopology topology;  // of the inner complex
+  ComplexEdges edges;        // its 1-skeleton (border / manifold / junction)
+  MedialCounts counts;
+  MedialTimes times;
+  ForcedTriangles forced;    // all forced triangles with their counters
+  InnerOuterLabels labels;   // walk counters (per-facet labels included)
+};
+
+// Whole pipeline; throws std::runtime_error / std::invalid_argument on an
+// inconsistent SampleSet. Inputs spanning fewer than 3 dimensions give an
+// empty result.
+MedialResult computeCadMedial(const SampleSet& samples, const MedialParams& params = MedialParams::cad(),
+                              const InsideOracle& oracle = {});
+
+// Same on a triangulation already built from samples.points (reuse it for the
+// pair-mesh).
+MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& samples,
+                              const MedialParams& params = MedialParams::cad(), const InsideOracle& oracle = {});
+
+}  // namespace cadmedial

@@ -1,0 +1,45 @@
+// Parameters of CAD_MEDIAL (DESIGN.md §4) and the optional inside oracle.
+#pragma once
+
+#include <functional>
+
+#include "cadmedial/sample_set.hpp"
+
+namespace cadmedial {
+
+// Which Delaunay triangles (= Voronoi edges) the inner/outer walk refuses to
+// cross. The walk only ever moves from one selected facet to another across a
+// Voronoi edge; it never moves through a forced triangle (a forced triangle has
+// a single Voronoi edge, so it can never carry the walk anywhere). See
+// inner_outer.hpp for what each choice means.
+enum class WalkBlocking : unsigned char {
+  None = 0,                       // cross every Voronoi edge shared by selected facets
+  NonConcaveCorners = 1,          // not across triangles incident to a non-concave corner sample
+  CornersAndConvexEdges = 2,      // ... nor across triangles incident to a convex-edge sample
+};
+
+struct MedialParams {
+  // Angle condition [θ]: all umbrella normals make an acute angle < π/2 - θ with pq.
+  double thetaDeg = 5.0;
+  // Ratio condition [ρ]: |pq| > ρ · (largest umbrella circumradius at p).
+  double rho = 8.0;
+  WalkBlocking walkBlocking = WalkBlocking::None;  // measured best, see inner_outer.hpp
+  // Compute β2 (and so β1) exactly only while the 2-core left after free-face
+  // collapses has at most this many polygons; otherwise β1 = β2 = -1.
+  std::size_t bettiCoreLimit = 200000;
+
+  // Defaults of seed 002 (CAD samples): θ = 5°, ρ = 8.
+  static MedialParams cad() { return MedialParams{}; }
+  // Defaults of seed 000 (point clouds): θ = π/8, ρ = 8.
+  static MedialParams pointCloud() {
+    MedialParams p;
+    p.thetaDeg = 22.5;
+    return p;
+  }
+};
+
+// Exact inside test of the solid (sampling/ wraps an OCCT classifier). Used
+// only to count disagreements with the walk, never to decide a label.
+using InsideOracle = std::function<bool(const Vec3&)>;
+
+}  // namespace cadmedial

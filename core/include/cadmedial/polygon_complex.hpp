@@ -1,0 +1,73 @@
+// Closure of the inner medial axis into an indexed polygon complex, its
+// segmentation into sheets, and its Betti numbers (DESIGN.md §4.6).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "cadmedial/delaunay.hpp"
+#include "cadmedial/facet_selection.hpp"
+#include "cadmedial/forced_triangles.hpp"
+#include "cadmedial/inner_outer.hpp"
+
+namespace cadmedial {
+
+struct MedialComplex {
+  // Shared vertices: one per Voronoi vertex (= Delaunay cell) used, plus one
+  // per sample used by a forced triangle.
+  std::vector<Vec3> vertices;
+  std::vector<double> radius;        // medial radius: circumradius of the cell; 0 at samples
+  std::vector<Index> vertexCell;     // cell id, or kNoIndex for a sample vertex
+  std::vector<Index> vertexSample;   // sample id, or kNoIndex for a Voronoi vertex
+  // Polygon i = vertices polygonVertices[polygonOffsets[i] .. polygonOffsets[i+1]).
+  std::vector<Index> polygonOffsets{0};
+  std::vector<Index> polygonVertices;
+  std::vector<PolygonProvenance> provenance;
+  // DelaunayEdgeFacet: (p, q); ConvexEdgeTriangle: (s, -); fill: (s, s'); corner: (p, -).
+  std::vector<std::array<Index, 2>> provenanceSamples;
+  // Sheet id per polygon (0 .. sheetCount-1), filled by segmentSheets().
+  std::vector<Index> sheet;
+  std::size_t sheetCount = 0;
+
+  std::size_t polygonCount() const { return provenance.size(); }
+  Index polygonSize(std::size_t i) const { return polygonOffsets[i + 1] - polygonOffsets[i]; }
+};
+
+// The 1-skeleton of a complex: distinct undirected polygon edges.
+struct ComplexEdges {
+  std::vector<std::array<Index, 2>> vertices;  // per edge
+  std::vector<Index> polygonCount;             // polygons incident to the edge
+  std::vector<Index> firstPolygon, secondPolygon;
+  // Edge of polygon slot k (from polygonVertices[k] to the next vertex of its polygon).
+  std::vector<Index> slotEdge;
+  std::size_t borderEdges = 0;    // in 1 polygon
+  std::size_t manifoldEdges = 0;  // in 2
+  std::size_t junctionEdges = 0;  // in 3 or more
+};
+
+struct ComplexTopology {
+  std::size_t vertices = 0, edges = 0, polygons = 0;
+  long long euler = 0;     // χ = V − E + F
+  long long beta0 = 0;     // connected components
+  long long beta1 = -1;    // β0 + β2 − χ (Z2 coefficients); -1 if β2 unknown
+  long long beta2 = -1;    // enclosed voids; -1 if the 2-core exceeded the limit
+  std::size_t coreSize = 0;  // polygons left after free-face collapses
+};
+
+// Inner facets (bounded, not reached by the walk) and inner forced triangles.
+MedialComplex buildInnerComplex(const DelaunayVoronoi& dv, const SampleSet& samples, const SelectedFacets& selected,
+                                const ForcedTriangles& forced, const InnerOuterLabels& labels);
+
+ComplexEdges buildComplexEdges(const MedialComplex& complex);
+
+// Sheets = maximal sets of polygons connected across edges shared by exactly
+// two polygons (border edges and non-manifold junction edges separate them).
+void segmentSheets(MedialComplex& complex, const ComplexEdges& edges);
+
+// β0 by union-find over the edges. β2 by elementary collapses (repeatedly
+// remove a polygon with a free edge: homotopy-preserving) followed by the Z2
+// rank of the boundary matrix of the remaining 2-core (skipped above
+// coreLimit polygons). β1 from the Euler characteristic: β1 = β0 + β2 − χ.
+ComplexTopology computeTopology(const MedialComplex& complex, const ComplexEdges& edges, std::size_t coreLimit);
+
+}  // namespace cadmedial

@@ -1,0 +1,83 @@
+#include <stdexcept>
+
+#include "cadmedial/medial.hpp"
+#include "cadmedial/timer.hpp"
+
+namespace cadmedial {
+
+MedialResult computeCadMedial(const SampleSet& samples, const MedialParams& params, const InsideOracle& oracle) {
+  samples.validate();
+  DelaunayVoronoi dv(samples.points);
+  return computeCadMedial(dv, samples, params, oracle);
+}
+
+MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& samples, const MedialParams& params,
+                              const InsideOracle& oracle) {
+  samples.validate();
+  if (dv.sampleCount() != samples.size())
+    throw std::invalid_argument("computeCadMedial: triangulation and SampleSet differ in size");
+  if (!(params.thetaDeg > 0 && params.thetaDeg < 90)) throw std::invalid_argument("MedialParams: theta must be in (0°, 90°)");
+  if (!(params.rho > 0)) throw std::invalid_argument("MedialParams: rho must be positive");
+
+  MedialResult r;
+  r.times.delaunay = dv.delaunaySeconds();
+  r.times.voronoi = dv.sideArraySeconds();
+  Stopwatch total;
+  Stopwatch watch;
+
+  const UmbrellaData umbrellas = computeUmbrellaData(samples);
+  r.times.umbrellas = watch.seconds();
+
+  const SelectedFacets selected = selectFacetsByAngleAndRatio(dv, umbrellas, params);
+  r.times.selection = selected.seconds;
+
+  procConvexEdges(dv, samples, selected, r.forced);
+  procNonconcaveCorners(dv, samples, selected, r.forced);
+  r.times.convexEdges = r.forced.convexSeconds;
+  r.times.corners = r.forced.cornerSeconds;
+
+  r.labels = separateInnerOuter(dv, samples, selected, r.forced, params, oracle);
+  r.times.walk = r.labels.seconds;
+  r.times.oracle = r.labels.oracleSeconds;
+
+  watch.restart();
+  static_cast<MedialComplex&>(r) = buildInnerComplex(dv, samples, selected, r.forced, r.labels);
+  r.times.complex = watch.seconds();
+
+  watch.restart();
+  r.edges = buildComplexEdges(r);
+  segmentSheets(r, r.edges);
+  r.times.sheets = watch.seconds();
+
+  watch.restart();
+  r.topology = computeTopology(r, r.edges, params.bettiCoreLimit);
+  r.times.topology = watch.seconds();
+  r.times.total = r.times.delaunay + r.times.voronoi + total.seconds() - r.times.oracle;
+
+  MedialCounts& c = r.counts;
+  c.samples = samples.size();
+  c.duplicateSamples = dv.duplicateCount();
+  c.delaunayCells = dv.finiteCellCount();
+  c.delaunayEdges = selected.finiteEdges;
+  c.selectedFacets = selected.size();
+  c.unboundedFacets = selected.unboundedCount;
+  c.innerFacets = r.labels.innerFacets;
+  c.outerFacets = r.labels.outerFacets;
+  c.convexEdgeTriangles = r.forced.convexEdgeTriangles;
+  c.convexFillTriangles = r.forced.convexFillTriangles;
+  c.cornerTriangles = r.forced.cornerTriangles;
+  c.outerCornerTriangles = r.labels.outerCornerTriangles;
+  c.tripletsNotDelaunay = r.forced.tripletsNotDelaunay;
+  c.tripletsOnHull = r.forced.tripletsOnHull;
+  c.degenerateUmbrellaTriangles = umbrellas.degenerateTriangles;
+  c.samplesWithoutUmbrella = umbrellas.samplesWithoutUmbrella;
+  c.sheets = r.sheetCount;
+  c.walkBlockedCrossings = r.labels.blockedCrossings;
+  c.oracleChecked = r.labels.oracleFacetsChecked;
+  c.oracleDisagreements = r.labels.oracleFacetDisagreements;
+  c.oracleForcedChecked = r.labels.oracleForcedChecked;
+  c.oracleForcedDisagreements = r.labels.oracleForcedDisagreements;
+  return r;
+}
+
+}  // namespace cadmedial

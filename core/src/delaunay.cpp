@@ -1,0 +1,141 @@
+#include "cadmedial/delaunay.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "cadmedial/timer.hpp"
+
+namespace cadmedial {
+
+namespace {
+
+// Circumcenter of a Delaunay cell. A flat cell (four cocircular coplanar
+// samples, e.g. a rectangle of edge samples and triplet legs on a planar face)
+// has no finite circumsphere: CGAL's formula then divides by ~0 and returns a
+// point at infinity or far outside. Its dual Voronoi vertex degenerates to the
+// centre of the common circle, which the largest facet's circumcenter gives.
+DelaunayVoronoi::Point robustCircumcenter(const DelaunayVoronoi::Point& a, const DelaunayVoronoi::Point& b,
+                                         const DelaunayVoronoi::Point& c, const DelaunayVoronoi::Point& d) {
+  using K = DelaunayVoronoi::Kernel;
+  const double volume = std::abs(CGAL::volume(a, b, c, d));
+  double longest = 0;
+  const DelaunayVoronoi::Point* pts[4] = {&a, &b, &c, &d};
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) longest = std::max(longest, CGAL::squared_distance(*pts[i], *pts[j]));
+  const double scale = longest * std::sqrt(longest);  // ~ edge length cubed
+  if (volume > 1e-10 * scale) {
+    const auto cc = CGAL::circumcenter(a, b, c, d);
+    if (std::isfinite(cc.x()) && std::isfinite(cc.y()) && std::isfinite(cc.z())) return cc;
+  }
+  int skip = 0;
+  double bestArea = -1;
+  for (int i = 0; i < 4; ++i) {
+    const auto& p = *pts[(i + 1) % 4];
+    const auto& q = *pts[(i + 2) % 4];
+    const auto& r = *pts[(i + 3) % 4];
+    const double area = K::Compute_squared_area_3()(p, q, r);
+    if (area > bestArea) {
+      bestArea = area;
+      skip = i;
+    }
+  }
+  return CGAL::circumcenter(*pts[(skip + 1) % 4], *pts[(skip + 2) % 4], *pts[(skip + 3) % 4]);
+}
+
+}  // namespace
+
+DelaunayVoronoi::DelaunayVoronoi(const std::vector<Vec3>& points) {
+  const std::size_t n = points.size();
+  if (n >= kNoIndex) throw std::invalid_argument("too many samples for 32-bit indices");
+  std::vector<std::pair<Point, Index>> input;
+  input.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3& p = points[i];
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      throw std::invalid_argument("sample " + std::to_string(i) + " has a non-finite coordinate");
+    input.emplace_back(Point(p[0], p[1], p[2]), static_cast<Index>(i));
+  }
+
+  Stopwatch watch;
+  dt_.insert(input.begin(), input.end());  // spatial sort inside CGAL
+  delaunaySeconds_ = watch.seconds();
+  watch.restart();
+
+  // Samples -> vertices. CGAL keeps the first-inserted info of merged points;
+  // the others are found by locating their point (it lands on a vertex).
+  vertex_.assign(n, Vertex_handle());
+  canonical_.assign(n, kNoIndex);
+  for (auto v = dt_.finite_vertices_begin(); v != dt_.finite_vertices_end(); ++v) {
+    vertex_[v->info()] = v;
+    canonical_[v->info()] = v->info();
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (canonical_[i] != kNoIndex) continue;
+    ++duplicates_;
+    Triangulation::Locate_type lt;
+    int li = 0, lj = 0;
+    Cell_handle c = dt_.locate(input[i].first, lt, li, lj);
+    if (lt != Triangulation::VERTEX)
+      throw std::logic_error("Delaunay: a merged sample is not at a vertex");
+    vertex_[i] = c->vertex(li);
+  }
+  // The canonical sample of a location is its lowest sample index (whose
+  // umbrella and flags the later stages use), whatever order CGAL inserted in.
+  if (duplicates_ > 0) {
+    for (std::size_t i = 0; i < n; ++i) {
+      Vertex_handle v = vertex_[i];
+      if (i < v->info()) v->info() = static_cast<Index>(i);
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) canonical_[i] = vertex_[i]->info();
+
+  // Dense cell ids and per-cell circumcenters (computed once, in parallel).
+  cells_.clear();
+  if (dt_.dimension() == 3) {
+    cells_.reserve(dt_.number_of_cells() + dt_.number_of_finite_cells() / 8 + 16);
+    for (auto c = dt_.all_cells_begin(); c != dt_.all_cells_end(); ++c) {
+      c->info() = static_cast<Index>(cells_.size());
+      cells_.push_back(c);
+    }
+  }
+  const std::size_t m = cells_.size();
+  infinite_.assign(m, 0);
+  center_.resize(m);
+  radius_.resize(m);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t id = r.begin(); id != r.end(); ++id) {
+      Cell_handle c = cells_[id];
+      if (dt_.is_infinite(c)) {
+        infinite_[id] = 1;
+        center_[id] = {nan, nan, nan};
+        radius_[id] = inf;
+        continue;
+      }
+      const Point& p0 = c->vertex(0)->point();
+      const Point cc = robustCircumcenter(p0, c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
+      center_[id] = {cc.x(), cc.y(), cc.z()};
+      radius_[id] = std::sqrt(CGAL::squared_distance(cc, p0));
+    }
+  });
+  finiteCells_ = 0;
+  for (std::uint8_t f : infinite_) finiteCells_ += f ? 0 : 1;
+  sideArraySeconds_ = watch.seconds();
+}
+
+bool DelaunayVoronoi::cellHasSample(Index id, Index sample) const {
+  Cell_handle c = cells_[id];
+  for (int i = 0; i < 4; ++i) {
+    Vertex_handle v = c->vertex(i);
+    if (!dt_.is_infinite(v) && v->info() == sample) return true;
+  }
+  return false;
+}
+
+}  // namespace cadmedial

@@ -1,0 +1,137 @@
+#include <vector>
+
+#include "cadmedial/inner_outer.hpp"
+#include "cadmedial/timer.hpp"
+
+namespace cadmedial {
+
+namespace {
+
+Vec3 facetCentroid(const DelaunayVoronoi& dv, const SelectedFacets& sel, Index f) {
+  Vec3 c{0, 0, 0};
+  for (const Index* it = sel.ringBegin(f); it != sel.ringEnd(f); ++it)
+    for (int k = 0; k < 3; ++k) c[k] += dv.circumcenter(*it)[k];
+  const double n = sel.ringSize(f);
+  return {c[0] / n, c[1] / n, c[2] / n};
+}
+
+Vec3 forcedCentroid(const DelaunayVoronoi& dv, const SampleSet& samples, const ForcedTriangle& t) {
+  Vec3 c{0, 0, 0};
+  int n = 0;
+  for (Index s : t.samples)
+    if (s != kNoIndex) {
+      for (int k = 0; k < 3; ++k) c[k] += samples.points[s][k];
+      ++n;
+    }
+  for (Index v : t.cells)
+    if (v != kNoIndex) {
+      for (int k = 0; k < 3; ++k) c[k] += dv.circumcenter(v)[k];
+      ++n;
+    }
+  return {c[0] / n, c[1] / n, c[2] / n};
+}
+
+}  // namespace
+
+InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& samples,
+                                    const SelectedFacets& selected, const ForcedTriangles& forced,
+                                    const MedialParams& params, const InsideOracle& oracle) {
+  Stopwatch watch;
+  InnerOuterLabels out;
+  const std::size_t nf = selected.size();
+  out.facetOuter.assign(nf, 0);
+  out.forcedOuter.assign(forced.triangles.size(), 0);
+
+  // Samples whose Voronoi cell's edges the walk may not cross.
+  std::vector<std::uint8_t> blocks(samples.size(), 0);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    bool b = false;
+    if (params.walkBlocking != WalkBlocking::None && i < samples.isNonConcaveCorner.size())
+      b = samples.isNonConcaveCorner[i] != 0;
+    if (params.walkBlocking == WalkBlocking::CornersAndConvexEdges && i < samples.onConvexEdge.size())
+      b = b || samples.onConvexEdge[i] != 0;
+    if (b) blocks[dv.canonicalSample(static_cast<Index>(i))] = 1;
+  }
+
+  // Refused crossings are remembered to report whether blocking mattered.
+  std::vector<Index> refusedTargets;
+  std::vector<Index> stack;
+  for (Index seed = 0; seed < nf; ++seed) {
+    if (!selected.unbounded[seed]) continue;
+    ++out.seeds;
+    if (out.facetOuter[seed]) continue;
+    ++out.walks;
+    out.facetOuter[seed] = 1;
+    stack.push_back(seed);
+    while (!stack.empty()) {
+      const Index f = stack.back();
+      stack.pop_back();
+      const Index p = selected.edge[f][0], q = selected.edge[f][1];
+      const Index* ring = selected.ringBegin(f);
+      const Index k = selected.ringSize(f);
+      for (Index t = 0; t < k; ++t) {
+        // Consecutive cells share the Delaunay triangle p q x (a Voronoi edge).
+        const auto ca = dv.cell(ring[t]);
+        const auto cb = dv.cell(ring[(t + 1) % k]);
+        Index x = kNoIndex;
+        for (int i = 0; i < 4; ++i) {
+          const auto vh = ca->vertex(i);
+          if (dv.triangulation().is_infinite(vh)) continue;
+          const Index s = vh->info();
+          if (s == p || s == q) continue;
+          if (cb->has_vertex(vh)) {
+            x = s;
+            break;
+          }
+        }
+        if (x == kNoIndex) continue;  // triangle p q ∞: no other finite edge
+        const bool blocked = blocks[p] || blocks[q] || blocks[x];
+        for (Index g : {selected.find(p, x), selected.find(q, x)}) {
+          if (g == kNoIndex || out.facetOuter[g]) continue;
+          if (blocked) {
+            ++out.blockedCrossings;
+            refusedTargets.push_back(g);
+            continue;
+          }
+          out.facetOuter[g] = 1;
+          stack.push_back(g);
+        }
+      }
+    }
+  }
+  for (Index f = 0; f < nf; ++f) (out.facetOuter[f] ? out.outerFacets : out.innerFacets)++;
+  for (Index g : refusedTargets) out.blockedCrossingsToInner += out.facetOuter[g] ? 0 : 1;
+
+  for (std::size_t i = 0; i < forced.triangles.size(); ++i) {
+    const ForcedTriangle& t = forced.triangles[i];
+    const bool attachedOuter = t.attachedFacet != kNoIndex && out.facetOuter[t.attachedFacet];
+    if (!attachedOuter) continue;
+    out.forcedOuter[i] = 1;
+    if (t.kind == PolygonProvenance::CornerTriangle) ++out.outerCornerTriangles;
+    else ++out.outerConvexTriangles;
+  }
+  out.seconds = watch.seconds();
+
+  if (oracle) {
+    Stopwatch ow;
+    for (Index f = 0; f < nf; ++f) {
+      if (selected.unbounded[f]) continue;
+      ++out.oracleFacetsChecked;
+      const bool inside = oracle(facetCentroid(dv, selected, f));
+      const bool inner = !out.facetOuter[f];
+      if (inside != inner) {
+        ++out.oracleFacetDisagreements;
+        out.oracleInnerOutside += inner ? 1 : 0;
+      }
+    }
+    for (std::size_t i = 0; i < forced.triangles.size(); ++i) {
+      ++out.oracleForcedChecked;
+      const bool inside = oracle(forcedCentroid(dv, samples, forced.triangles[i]));
+      if (inside == (out.forcedOuter[i] != 0)) ++out.oracleForcedDisagreements;
+    }
+    out.oracleSeconds = ow.seconds();
+  }
+  return out;
+}
+
+}  // namespace cadmedial

@@ -1,0 +1,93 @@
+#include "cadmedial/polygon_complex.hpp"
+
+namespace cadmedial {
+
+MedialComplex buildInnerComplex(const DelaunayVoronoi& dv, const SampleSet& samples, const SelectedFacets& selected,
+                                const ForcedTriangles& forced, const InnerOuterLabels& labels) {
+  MedialComplex mc;
+  std::vector<Index> cellVertex(dv.cellCount(), kNoIndex);
+  std::vector<Index> sampleVertex(samples.size(), kNoIndex);
+  auto cellV = [&](Index c) {
+    if (cellVertex[c] == kNoIndex) {
+      cellVertex[c] = static_cast<Index>(mc.vertices.size());
+      mc.vertices.push_back(dv.circumcenter(c));
+      mc.radius.push_back(dv.circumradius(c));
+      mc.vertexCell.push_back(c);
+      mc.vertexSample.push_back(kNoIndex);
+    }
+    return cellVertex[c];
+  };
+  auto sampleV = [&](Index s) {
+    if (sampleVertex[s] == kNoIndex) {
+      sampleVertex[s] = static_cast<Index>(mc.vertices.size());
+      mc.vertices.push_back(samples.points[s]);
+      mc.radius.push_back(0.0);
+      mc.vertexCell.push_back(kNoIndex);
+      mc.vertexSample.push_back(s);
+    }
+    return sampleVertex[s];
+  };
+  auto close = [&](PolygonProvenance kind, Index a, Index b) {
+    mc.polygonOffsets.push_back(static_cast<Index>(mc.polygonVertices.size()));
+    mc.provenance.push_back(kind);
+    mc.provenanceSamples.push_back({a, b});
+  };
+
+  for (Index f = 0; f < selected.size(); ++f) {
+    if (selected.unbounded[f] || labels.facetOuter[f]) continue;
+    for (const Index* it = selected.ringBegin(f); it != selected.ringEnd(f); ++it)
+      mc.polygonVertices.push_back(cellV(*it));
+    close(PolygonProvenance::DelaunayEdgeFacet, selected.edge[f][0], selected.edge[f][1]);
+  }
+  for (std::size_t i = 0; i < forced.triangles.size(); ++i) {
+    if (labels.forcedOuter[i]) continue;
+    const ForcedTriangle& t = forced.triangles[i];
+    if (t.kind == PolygonProvenance::ConvexEdgeFillTriangle) {
+      mc.polygonVertices.push_back(sampleV(t.samples[0]));
+      mc.polygonVertices.push_back(sampleV(t.samples[1]));
+      mc.polygonVertices.push_back(cellV(t.cells[0]));
+      close(t.kind, t.samples[0], t.samples[1]);
+    } else {
+      mc.polygonVertices.push_back(sampleV(t.samples[0]));
+      mc.polygonVertices.push_back(cellV(t.cells[0]));
+      mc.polygonVertices.push_back(cellV(t.cells[1]));
+      close(t.kind, t.samples[0], kNoIndex);
+    }
+  }
+  mc.sheet.assign(mc.polygonCount(), kNoIndex);
+  return mc;
+}
+
+ComplexEdges buildComplexEdges(const MedialComplex& mc) {
+  ComplexEdges ce;
+  PairTable table;
+  table.reserve(mc.polygonVertices.size() / 2 + 16);
+  ce.slotEdge.resize(mc.polygonVertices.size());
+  for (std::size_t p = 0; p < mc.polygonCount(); ++p) {
+    const Index b = mc.polygonOffsets[p], e = mc.polygonOffsets[p + 1];
+    for (Index k = b; k < e; ++k) {
+      const Index u = mc.polygonVertices[k];
+      const Index v = mc.polygonVertices[k + 1 < e ? k + 1 : b];
+      const Index id = table.insert(u, v, static_cast<Index>(ce.vertices.size()));
+      if (id == ce.vertices.size()) {
+        ce.vertices.push_back({std::min(u, v), std::max(u, v)});
+        ce.polygonCount.push_back(0);
+        ce.firstPolygon.push_back(kNoIndex);
+        ce.secondPolygon.push_back(kNoIndex);
+      }
+      ce.slotEdge[k] = id;
+      Index& count = ce.polygonCount[id];
+      if (count == 0) ce.firstPolygon[id] = static_cast<Index>(p);
+      else if (count == 1) ce.secondPolygon[id] = static_cast<Index>(p);
+      ++count;
+    }
+  }
+  for (Index c : ce.polygonCount) {
+    if (c == 1) ++ce.borderEdges;
+    else if (c == 2) ++ce.manifoldEdges;
+    else ++ce.junctionEdges;
+  }
+  return ce;
+}
+
+}  // namespace cadmedial

@@ -1,0 +1,83 @@
+// Sheets and Betti numbers on hand-built complexes, and the performance budget.
+#include <gtest/gtest.h>
+
+#include "medial_checks.hpp"
+#include "synthetic_samples.hpp"
+
+using namespace cadmedial;
+using namespace cadmedial::testing;
+
+namespace {
+
+MedialComplex complexOf(std::size_t vertices, const std::vector<std::vector<Index>>& polygons) {
+  MedialComplex mc;
+  for (std::size_t i = 0; i < vertices; ++i) {
+    mc.vertices.push_back({double(i), 0, 0});
+    mc.radius.push_back(1);
+    mc.vertexCell.push_back(Index(i));
+    mc.vertexSample.push_back(kNoIndex);
+  }
+  for (const auto& p : polygons) {
+    mc.polygonVertices.insert(mc.polygonVertices.end(), p.begin(), p.end());
+    mc.polygonOffsets.push_back(Index(mc.polygonVertices.size()));
+    mc.provenance.push_back(PolygonProvenance::DelaunayEdgeFacet);
+    mc.provenanceSamples.push_back({0, 1});
+  }
+  return mc;
+}
+
+ComplexTopology topologyOf(MedialComplex mc) {
+  const ComplexEdges e = buildComplexEdges(mc);
+  return computeTopology(mc, e, 1000);
+}
+
+}  // namespace
+
+TEST(Topology, TetrahedronSurfaceEnclosesAVoid) {
+  const ComplexTopology t = topologyOf(complexOf(4, {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {0, 2, 3}}));
+  EXPECT_EQ(t.euler, 2);
+  EXPECT_EQ(t.beta0, 1);
+  EXPECT_EQ(t.beta1, 0);
+  EXPECT_EQ(t.beta2, 1);
+}
+
+TEST(Topology, AnnulusHasOneLoop) {
+  // Two triangles' rings 0-1-2 and 3-4-5 joined by a band of quads.
+  const ComplexTopology t =
+      topologyOf(complexOf(6, {{0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}}));
+  EXPECT_EQ(t.beta0, 1);
+  EXPECT_EQ(t.beta1, 1);
+  EXPECT_EQ(t.beta2, 0);
+  EXPECT_EQ(t.coreSize, 0u);
+}
+
+TEST(Topology, DisjointPiecesAndGraphLoops) {
+  const ComplexTopology t = topologyOf(complexOf(7, {{0, 1, 2}, {3, 4, 5}, {3, 5, 6}}));
+  EXPECT_EQ(t.beta0, 2);
+  EXPECT_EQ(t.beta1, 0);
+}
+
+TEST(Topology, SheetsSplitAtJunctionEdges) {
+  // Three triangles on edge 0-1 (a junction), plus one more glued to the
+  // third along 1-4 (manifold).
+  MedialComplex mc = complexOf(6, {{0, 1, 2}, {0, 1, 3}, {0, 1, 4}, {1, 4, 5}});
+  const ComplexEdges e = buildComplexEdges(mc);
+  EXPECT_EQ(e.junctionEdges, 1u);
+  segmentSheets(mc, e);
+  EXPECT_EQ(mc.sheetCount, 3u);
+  EXPECT_EQ(mc.sheet[2], mc.sheet[3]);
+  EXPECT_NE(mc.sheet[0], mc.sheet[1]);
+  EXPECT_NE(mc.sheet[0], mc.sheet[2]);
+}
+
+TEST(Performance, PipelineWithinBudgetOfDelaunay) {
+  // DESIGN.md §7: report against CGAL's own Delaunay time on the same points.
+  // Target ≤ 3×; asserted ≤ 4× so a loaded machine does not make it flaky.
+  SamplingOptions o;
+  o.spacing = 0.01;
+  const SampleSet s = samplePlanarSolid(makeBox(1, 0.8, 0.6), o);
+  const MedialResult r = computeCadMedial(s);
+  const double ratio = r.times.total / r.times.delaunay;
+  std::cout << s.size() << " samples: " << summary(r) << "\n  total / Delaunay = " << ratio << "\n";
+  EXPECT_LE(ratio, 4.0);
+}
