@@ -33,7 +33,8 @@ enum class EdgeKind : std::uint8_t {
 // A convex-edge triplet (seed 002 §4.2.1): s on the edge, sLeft and sRight on
 // the two incident faces, with s-sLeft and s-sRight perpendicular to the edge
 // at s and of equal length. prev / next are the neighbouring samples s', s''
-// along the same sharp edge chain (kNoIndex at a chain end).
+// along the same edge, including the vertex sample at an edge end; core's
+// convex-edge fill triangles need them (kNoIndex loses the fills there).
 struct Triplet {
   Index s = kNoIndex;
   Index sLeft = kNoIndex;
