@@ -4,10 +4,11 @@
 // so the union over faces is one stitched surface.
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <list>
 #include <stdexcept>
+#include <string>
+
+#include <tbb/parallel_for.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -124,18 +125,18 @@ std::vector<std::vector<LoopPoint>> boundaryLoops(const SamplingContext& ctx, co
   return loops;
 }
 
-}  // namespace
+// One face's triangles (already oriented outward) or the reason it failed.
+struct FaceMesh {
+  std::vector<std::array<Index, 3>> triangles;
+  int droppedTriangles = 0;
+  double areaError = 0;  // |mesh area / exact area - 1|
+  std::string problem;   // empty on success
+};
 
-ReconstructionReport reconstructFaces(SamplingContext& ctx, SampleSet& set) {
-  ReconstructionReport report;
-  const int nf = ctx.topo.faceCount();
-  std::vector<std::vector<Index>> interior(nf);
-  for (Index i = 0; i < set.points.size(); ++i)
-    if (set.kind[i] == SampleKind::Face) interior[set.owner[i]].push_back(i);
-  std::vector<std::uint8_t> used(set.points.size(), 0);
-
-  for (int f = 0; f < nf; ++f) {
-    const TopoDS_Face& face = ctx.topo.face(f);
+FaceMesh reconstructFace(const SamplingContext& ctx, const SampleSet& set, int f, const std::vector<Index>& interior) {
+  FaceMesh out;
+  const TopoDS_Face& face = ctx.topo.face(f);
+  try {
     BRepAdaptor_Surface surf(face, false);
     double u0, u1, v0, v1;
     BRepTools::UVBounds(face, u0, u1, v0, v1);
@@ -154,65 +155,83 @@ ReconstructionReport reconstructFaces(SamplingContext& ctx, SampleSet& set) {
     sv = sv > 0 ? sv / (n * n) : 1.0;
     auto toPlane = [&](const gp_Pnt2d& uv) { return K::Point_2(uv.X() * su, uv.Y() * sv); };
 
-    if (std::getenv("CADMEDIAL_DEBUG_FACE") && std::atoi(std::getenv("CADMEDIAL_DEBUG_FACE")) == f) {
-      for (const auto& loop : boundaryLoops(ctx, set, f)) {
-        std::fprintf(stderr, "loop\n");
-        for (const auto& p : loop)
-          std::fprintf(stderr, "%g %g %u kind %d owner %d\n", p.uv.X() * su, p.uv.Y() * sv, p.sample,
-                       int(set.kind[p.sample]), set.owner[p.sample]);
+    Cdt cdt;
+    for (const auto& loop : boundaryLoops(ctx, set, f)) {
+      std::vector<Cdt::Vertex_handle> handles;
+      for (const LoopPoint& p : loop) {
+        Cdt::Vertex_handle vh = cdt.insert(toPlane(p.uv));
+        vh->info().id = p.sample;
+        handles.push_back(vh);
+      }
+      for (std::size_t k = 0; k < handles.size(); ++k) {
+        Cdt::Vertex_handle a = handles[k], b = handles[(k + 1) % handles.size()];
+        if (a != b) cdt.insert_constraint(a, b);
       }
     }
-    try {
-      Cdt cdt;
-      for (const auto& loop : boundaryLoops(ctx, set, f)) {
-        std::vector<Cdt::Vertex_handle> handles;
-        for (const LoopPoint& p : loop) {
-          Cdt::Vertex_handle vh = cdt.insert(toPlane(p.uv));
-          vh->info().id = p.sample;
-          handles.push_back(vh);
-        }
-        for (std::size_t k = 0; k < handles.size(); ++k) {
-          Cdt::Vertex_handle a = handles[k], b = handles[(k + 1) % handles.size()];
-          if (a != b) cdt.insert_constraint(a, b);
-        }
+    for (Index i : interior) {
+      Cdt::Vertex_handle vh = cdt.insert(toPlane(ctx.faceSampleUv[i]));
+      if (vh->info().id == kNoIndex) vh->info().id = i;
+    }
+    markDomains(cdt);
+    double meshArea = 0;
+    for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh) {
+      if (!fh->info().inDomain()) continue;
+      std::array<Index, 3> tri{fh->vertex(0)->info().id, fh->vertex(1)->info().id, fh->vertex(2)->info().id};
+      if (tri[0] == kNoIndex || tri[1] == kNoIndex || tri[2] == kNoIndex)
+        throw std::runtime_error("boundary constraints intersect in UV (surface type " +
+                                 std::to_string(static_cast<int>(surf.GetType())) + ")");
+      if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) {
+        ++out.droppedTriangles;
+        continue;
       }
-      for (Index i : interior[f]) {
-        Cdt::Vertex_handle vh = cdt.insert(toPlane(ctx.faceSampleUv[i]));
-        if (vh->info().id == kNoIndex) vh->info().id = i;
-      }
-      markDomains(cdt);
-      double meshArea = 0;
-      for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh) {
-        if (!fh->info().inDomain()) continue;
-        std::array<Index, 3> tri{fh->vertex(0)->info().id, fh->vertex(1)->info().id, fh->vertex(2)->info().id};
-        if (tri[0] == kNoIndex || tri[1] == kNoIndex || tri[2] == kNoIndex) {
-          throw std::runtime_error("boundary constraints intersect in UV (surface type " +
-                                   std::to_string(static_cast<int>(surf.GetType())) + ", " +
-                                   std::to_string(boundaryLoops(ctx, set, f).size()) + " loops)");
-        }
-        if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) {
-          ++report.droppedTriangles;
-          continue;
-        }
-        if (face.Orientation() == TopAbs_REVERSED) std::swap(tri[1], tri[2]);
-        set.triangles.push_back(tri);
-        set.triangleFace.push_back(f);
-        meshArea += triangleArea(set.points[tri[0]], set.points[tri[1]], set.points[tri[2]]);
-        for (Index v : tri) used[v] = 1;
-      }
-      GProp_GProps props;
-      BRepGProp::SurfaceProperties(face, props);
-      const double error = props.Mass() > 0 ? std::abs(meshArea / props.Mass() - 1.0) : 0.0;
-      if (error > report.worstFaceAreaError) {
-        report.worstFaceAreaError = error;
-        report.worstFace = f;
-      }
-    } catch (const std::exception& e) {
+      if (face.Orientation() == TopAbs_REVERSED) std::swap(tri[1], tri[2]);
+      out.triangles.push_back(tri);
+      meshArea += triangleArea(set.points[tri[0]], set.points[tri[1]], set.points[tri[2]]);
+    }
+    GProp_GProps props;
+    BRepGProp::SurfaceProperties(face, props);
+    out.areaError = props.Mass() > 0 ? std::abs(meshArea / props.Mass() - 1.0) : 0.0;
+  } catch (const std::exception& e) {
+    out.triangles.clear();
+    out.problem = e.what();
+  } catch (const Standard_Failure& e) {
+    out.triangles.clear();
+    out.problem = e.GetMessageString();
+  }
+  return out;
+}
+
+}  // namespace
+
+ReconstructionReport reconstructFaces(SamplingContext& ctx, SampleSet& set) {
+  ReconstructionReport report;
+  const int nf = ctx.topo.faceCount();
+  std::vector<std::vector<Index>> interior(nf);
+  for (Index i = 0; i < set.points.size(); ++i)
+    if (set.kind[i] == SampleKind::Face) interior[set.owner[i]].push_back(i);
+
+  // Faces are independent: triangulate them in parallel, merge in face order
+  // so the output does not depend on scheduling.
+  std::vector<FaceMesh> meshes(nf);
+  tbb::parallel_for(0, nf, [&](int f) { meshes[f] = reconstructFace(ctx, set, f, interior[f]); });
+
+  std::vector<std::uint8_t> used(set.points.size(), 0);
+  for (int f = 0; f < nf; ++f) {
+    const FaceMesh& m = meshes[f];
+    if (!m.problem.empty()) {
       ++report.facesFailed;
-      report.problems.push_back("face " + std::to_string(f) + ": " + e.what());
-    } catch (const Standard_Failure& e) {
-      ++report.facesFailed;
-      report.problems.push_back("face " + std::to_string(f) + ": " + e.GetMessageString());
+      report.problems.push_back("face " + std::to_string(f) + ": " + m.problem);
+      continue;
+    }
+    report.droppedTriangles += m.droppedTriangles;
+    if (m.areaError > report.worstFaceAreaError) {
+      report.worstFaceAreaError = m.areaError;
+      report.worstFace = f;
+    }
+    for (const auto& tri : m.triangles) {
+      set.triangles.push_back(tri);
+      set.triangleFace.push_back(f);
+      for (Index v : tri) used[v] = 1;
     }
   }
   for (Index i = 0; i < set.points.size(); ++i)
