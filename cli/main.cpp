@@ -5,7 +5,9 @@
 #include <CLI/CLI.hpp>
 #include <Standard_Failure.hxx>
 
+#include "batch_runner.hpp"
 #include "cadmedial/errors.hpp"
+#include "eval_command.hpp"
 #include "run_command.hpp"
 #include "sample_command.hpp"
 
@@ -34,6 +36,36 @@ int main(int argc, char** argv) {
   runCmd->add_flag("--no-oracle", noOracle,
                    "Skip the check of the inner/outer walk against OCCT's exact classifier (faster)");
 
+  BatchOptions batch;
+  CLI::App* batchCmd = app.add_subcommand(
+      "batch", "Run `run` over many files, each in its own process; one record per file in OUTDIR/results.jsonl");
+  batchCmd->add_option("inputs", batch.inputs, "Model files, folders (recursive) or manifests (*.txt, *.lst, @FILE)")
+      ->required();
+  batchCmd->add_option("-o,--output", batch.outDir, "Output directory")->required();
+  batchCmd->add_option("-j,--jobs", batch.jobs, "Files processed at once (default: number of cores)")
+      ->check(CLI::PositiveNumber);
+  batchCmd->add_option("--timeout", batch.timeoutSeconds, "Seconds per file before it is killed (default: none)")
+      ->check(CLI::PositiveNumber);
+  batchCmd->add_option("--max-memory", batch.maxMemoryGiB, "Address-space limit per file in GiB (default: none)")
+      ->check(CLI::PositiveNumber);
+  batchCmd->add_flag("--resume", batch.resume, "Skip files whose last record is ok and whose outputs exist");
+  batchCmd->add_flag("--eval", batch.eval, "Also run `cadmedial eval` on each file's outputs");
+  // Passed on to `cadmedial run` as given.
+  batchCmd->add_option("--spacing", "As for run")->check(CLI::PositiveNumber);
+  batchCmd->add_option("--theta", "As for run")->check(CLI::Range(0.0, 89.0));
+  batchCmd->add_option("--rho", "As for run")->check(CLI::PositiveNumber);
+  batchCmd->add_flag("--no-oracle", "As for run");
+
+  EvalCommandOptions eval;
+  CLI::App* evalCmd =
+      app.add_subcommand("eval", "Measure the medial axes written by `run` against the exact B-rep (eval.json per solid)");
+  evalCmd->add_option("model", eval.model, "The STEP/IGES/BREP file given to `run`")->required();
+  evalCmd->add_option("outdir", eval.outDir, "The output directory of `run`");
+  evalCmd->add_option("-o,--output", eval.outDir, "Same as OUTDIR");
+  evalCmd->add_option("--tolerance", eval.tolerance, "Tolerance as a fraction of the bounding-box diagonal (default 0.005)")
+      ->check(CLI::Range(1e-9, 0.999999));
+  evalCmd->add_flag("--strict", eval.strict, "Exit with code 1 when a solid fails a threshold");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -43,9 +75,23 @@ int main(int argc, char** argv) {
 
   try {
     if (*sampleCmd) return runSampleCommand(sample);
+    if (*evalCmd) {
+      if (eval.outDir.empty()) {
+        std::cerr << "error: eval needs the output directory of `run` (cadmedial eval MODEL OUTDIR)\n";
+        return kExitUsage;
+      }
+      return runEvalCommand(eval);
+    }
     if (*runCmd) {
       run.checkWithOracle = !noOracle;
       return runRunCommand(run);
+    }
+    if (*batchCmd) {
+      for (const char* name : {"--spacing", "--theta", "--rho"})
+        if (const CLI::Option* o = batchCmd->get_option(name); o->count() > 0)
+          batch.runArguments.insert(batch.runArguments.end(), {name, o->as<std::string>()});
+      if (batchCmd->get_option("--no-oracle")->count() > 0) batch.runArguments.push_back("--no-oracle");
+      return runBatchCommand(batch);
     }
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << "\n";

@@ -14,6 +14,7 @@
 #include "cadmedial/brep_io.hpp"
 #include "cadmedial/errors.hpp"
 #include "cadmedial/sampling.hpp"
+#include "medial_ply_io.hpp"
 #include "medial_summary.hpp"
 #include "medial_writers.hpp"
 #include "report_json.hpp"
@@ -21,22 +22,19 @@
 namespace cadmedial {
 
 namespace {
-// TEMPORARY until medial_ply_io lands.
-void writeMedialPlyFile(const std::string& path, const MedialComplex& c) {
-  writeFileAtomically(path, [&](std::ofstream& out) {
-    out << "ply\nformat ascii 1.0\nelement vertex " << c.vertices.size()
-        << "\nproperty double x\nproperty double y\nproperty double z\nproperty double radius\nelement face "
-        << c.polygonCount() << "\nproperty list uchar int vertex_indices\nproperty int sheet\nproperty uchar provenance\nend_header\n";
-    out.precision(17);
-    for (std::size_t i = 0; i < c.vertices.size(); ++i)
-      out << c.vertices[i][0] << ' ' << c.vertices[i][1] << ' ' << c.vertices[i][2] << ' ' << c.radius[i] << '\n';
-    for (std::size_t p = 0; p < c.polygonCount(); ++p) {
-      out << c.polygonSize(p);
-      for (Index k = c.polygonOffsets[p]; k < c.polygonOffsets[p + 1]; ++k) out << ' ' << c.polygonVertices[k];
-      out << ' ' << c.sheet[p] << ' ' << int(c.provenance[p]) << '\n';
-    }
-  });
+// The evaluation's plain mesh form of the complex (what medial.ply holds).
+MedialMesh toMedialMesh(const MedialComplex& c) {
+  MedialMesh mesh;
+  mesh.vertices = c.vertices;
+  mesh.radius = c.radius;
+  mesh.polygonOffsets = c.polygonOffsets;
+  mesh.polygonVertices = c.polygonVertices;
+  mesh.sheet.assign(c.sheet.begin(), c.sheet.end());
+  mesh.provenance.reserve(c.provenance.size());
+  for (PolygonProvenance p : c.provenance) mesh.provenance.push_back(static_cast<MedialProvenance>(p));
+  return mesh;
 }
+
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 }  // namespace
@@ -67,7 +65,7 @@ int runRunCommand(const RunCommandOptions& options) {
     t = Clock::now();
     const std::string dir = (std::filesystem::path(options.outDir) / ("solid_" + std::to_string(i))).string();
     std::filesystem::create_directories(dir);
-    writeMedialPlyFile(dir + "/medial.ply", medial);
+    writeMedialPlyFile(dir + "/medial.ply", toMedialMesh(medial));
     writeFileAtomically(dir + "/medial.obj", [&](std::ofstream& out) { writeMedialObj(out, medial); });
     writeFileAtomically(dir + "/medial.ma", [&](std::ofstream& out) { writeMedialMa(out, medial); });
     const double secondsWrite = secondsSince(t);

@@ -1,0 +1,151 @@
+#include "eval_command.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <vector>
+
+#include "atomic_file.hpp"
+#include "cadmedial/brep_io.hpp"
+#include "cadmedial/errors.hpp"
+#include "medial_ply_io.hpp"
+
+namespace cadmedial {
+
+namespace {
+
+std::string solidDir(const std::string& outDir, std::size_t i) {
+  return (std::filesystem::path(outDir) / ("solid_" + std::to_string(i))).string();
+}
+
+// Names of the failed checks, or "PASS".
+std::string verdictText(const EvaluationVerdict& v) {
+  std::string failed;
+  auto add = [&](bool ok, const char* name) {
+    if (!ok) failed += (failed.empty() ? "" : ",") + std::string(name);
+  };
+  add(v.inside, "inside");
+  add(v.medialness, "medial");
+  add(v.twoContacts, "contacts");
+  add(v.coverage, "coverage");
+  add(v.edges, "edges");
+  add(v.corners, "corners");
+  add(v.topology, "topology");
+  return failed.empty() ? "PASS" : "FAIL:" + failed;
+}
+
+}  // namespace
+
+nlohmann::json toJson(const EvaluationReport& r) {
+  using nlohmann::json;
+  const EvaluationThresholds& th = r.params.thresholds;
+  json j;
+  j["diagonal"] = r.diagonal;
+  j["tolerance"] = r.tolerance;
+  j["tolerance_fraction"] = r.params.toleranceFraction;
+  j["mesh"] = {{"vertices", r.vertices}, {"unused_vertices", r.unusedVertices}, {"polygons", r.polygons},
+               {"sheets", r.sheets}};
+  j["inside"] = {{"share", r.inside.share},         {"area", r.inside.area},
+                 {"outside_area", r.inside.outsideArea}, {"triangles", r.inside.triangles},
+                 {"points", r.inside.points},       {"outside_points", r.inside.outsidePoints},
+                 {"max_outside_depth", r.inside.maxOutsideDepth}};
+  j["medialness"] = {{"vertices", r.medialness.vertices},
+                     {"median", r.medialness.median},
+                     {"p90", r.medialness.p90},
+                     {"max", r.medialness.max},
+                     {"relative_to", "diagonal"},
+                     {"two_contacts", r.medialness.twoContacts},
+                     {"two_contact_share", r.medialness.twoContactShare},
+                     {"contact_angle_deg", r.params.contactAngleDeg}};
+  // An infinite gap (no medial vertex at all) is written as null.
+  j["coverage"] = {{"points", r.coverage.points},
+                   {"covered", r.coverage.covered},
+                   {"share", r.coverage.share},
+                   {"max_gap", std::isfinite(r.coverage.maxGap) ? json(r.coverage.maxGap) : json(nullptr)}};
+  j["attachment"] = {{"convex_edges", r.attachment.convexEdges},   {"convex_length", r.attachment.convexLength},
+                     {"attached_length", r.attachment.attachedLength}, {"edge_share", r.attachment.edgeShare},
+                     {"corners", r.attachment.corners},           {"attached_corners", r.attachment.attachedCorners},
+                     {"corner_share", r.attachment.cornerShare}};
+  const TopologyMetric& t = r.topology;
+  j["topology"] = {{"medial", {{"vertices", t.vertices},
+                               {"edges", t.edges},
+                               {"polygons", t.polygons},
+                               {"core_polygons", t.corePolygons},
+                               {"euler", t.euler},
+                               {"beta0", t.beta0},
+                               {"beta1", t.beta1},
+                               {"beta2", t.beta2}}},
+                   {"solid", {{"shells", t.shells}, {"beta0", t.solidBeta0}, {"beta1", t.solidBeta1}, {"beta2", t.solidBeta2}}},
+                   {"matches", t.matches}};
+  j["thresholds"] = {{"min_inside_share", th.minInsideShare},
+                     {"max_medialness_median_tol", th.maxMedialnessMedianTol},
+                     {"max_medialness_p90_tol", th.maxMedialnessP90Tol},
+                     {"min_two_contact_share", th.minTwoContactShare},
+                     {"min_coverage", th.minCoverage},
+                     {"min_edge_attachment", th.minEdgeAttachment},
+                     {"min_corner_attachment", th.minCornerAttachment}};
+  const EvaluationVerdict& v = r.pass;
+  j["pass"] = {{"inside", v.inside},   {"medialness", v.medialness}, {"two_contacts", v.twoContacts},
+               {"coverage", v.coverage}, {"edges", v.edges},         {"corners", v.corners},
+               {"topology", v.topology}, {"all", v.all()}};
+  j["seconds"] = {{"setup", r.secondsSetup},         {"inside", r.secondsInside},
+                  {"medialness", r.secondsMedialness}, {"coverage", r.secondsCoverage},
+                  {"attachment", r.secondsAttachment}, {"topology", r.secondsTopology}};
+  return j;
+}
+
+void printEvaluationHeader(std::FILE* out) {
+  std::fprintf(out, "%-6s %8s %22s %9s %8s %8s %8s %15s  %s\n", "solid", "inside%", "|d-r|/diag% med/p90/max",
+               "2-touch%", "cover%", "edges%", "corners", "b0,b1 (solid)", "verdict");
+}
+
+void printEvaluationRow(std::FILE* out, const std::string& solid, const EvaluationReport& r) {
+  char medial[64], corners[32], betti[48];
+  std::snprintf(medial, sizeof medial, "%.3f/%.3f/%.3f", 100 * r.medialness.median, 100 * r.medialness.p90,
+                100 * r.medialness.max);
+  std::snprintf(corners, sizeof corners, "%d/%d", r.attachment.attachedCorners, r.attachment.corners);
+  std::snprintf(betti, sizeof betti, "%lld,%lld (%lld,%lld)", r.topology.beta0, r.topology.beta1,
+                r.topology.solidBeta0, r.topology.solidBeta1);
+  std::fprintf(out, "%-6s %8.2f %22s %9.2f %8.2f %8.2f %8s %15s  %s\n", solid.c_str(), 100 * r.inside.share, medial,
+               100 * r.medialness.twoContactShare, 100 * r.coverage.share, 100 * r.attachment.edgeShare, corners, betti,
+               verdictText(r.pass).c_str());
+}
+
+int runEvalCommand(const EvalCommandOptions& options) {
+  if (!(options.tolerance > 0 && options.tolerance < 1))
+    throw InputError(kExitUsage, "--tolerance must be a fraction of the diagonal in (0, 1)");
+  const LoadedModel model = loadModel(options.model);
+  for (const std::string& w : model.warnings) std::cerr << "warning: " << options.model << ": " << w << "\n";
+
+  // Every input is checked before any (slow) evaluation starts.
+  std::vector<std::string> plyPaths;
+  for (std::size_t i = 0; i < model.solids.size(); ++i) {
+    plyPaths.push_back(solidDir(options.outDir, i) + "/medial.ply");
+    if (!std::filesystem::is_regular_file(plyPaths.back()))
+      throw InputError(kExitUnreadableInput, "missing " + plyPaths.back() + " (write it with `cadmedial run " +
+                                                 options.model + " -o " + options.outDir + "`)");
+  }
+
+  EvaluationParams params;
+  params.toleranceFraction = options.tolerance;
+  if (!options.quiet) printEvaluationHeader(stdout);
+  bool allPass = true;
+  for (std::size_t i = 0; i < model.solids.size(); ++i) {
+    const MedialMesh mesh = readMedialPlyFile(plyPaths[i]);
+    const EvaluationReport report = evaluateMedial(model.solids[i], mesh, params);
+    nlohmann::json j = toJson(report);
+    j["model"] = options.model;
+    j["solid"] = i;
+    j["medial_ply"] = plyPaths[i];
+    writeFileAtomically(solidDir(options.outDir, i) + "/eval.json", [&](std::ofstream& out) { out << j.dump(2) << "\n"; });
+    if (!options.quiet) {
+      printEvaluationRow(stdout, std::to_string(i), report);
+      std::fflush(stdout);
+    }
+    allPass = allPass && report.pass.all();
+  }
+  if (!options.quiet) std::printf("per solid: eval.json in %s/solid_<i>/\n", options.outDir.c_str());
+  return options.strict && !allPass ? kExitProcessingFailed : kExitOk;
+}
+
+}  // namespace cadmedial

@@ -1,0 +1,64 @@
+"""cadmedial: inner medial axes of CAD solids (CAD_MEDIAL) from Python and FreeCAD.
+
+Headless use (freecadcmd, or plain python3 after plugin/install.sh)::
+
+    import cadmedial
+    for axis in cadmedial.compute("models/flange.step", spacing=2.0):
+        print(axis.sheet_count, axis.summary["topology"])
+        axis.write("flange_medial.ply")
+
+    # inside FreeCAD: a Part shape or a document object works as well
+    results = cadmedial.compute(doc.Box.Shape)
+    medial = cadmedial.add_to_document(doc, doc.Box)   # parametric objects
+
+``compute`` and ``sample`` need no FreeCAD; ``add_to_document`` and the
+objects in ``cadmedial.document`` do.
+"""
+
+from .api import (
+    Cancelled,
+    InputError,
+    MedialAxisResult,
+    SampleResult,
+    compute,
+    estimate_samples,
+    inspect,
+    sample,
+    to_source,
+)
+from .export import EXPORT_FORMATS, write_medial
+
+__all__ = [
+    "Cancelled",
+    "EXPORT_FORMATS",
+    "InputError",
+    "MedialAxisResult",
+    "SampleResult",
+    "add_to_document",
+    "compute",
+    "estimate_samples",
+    "inspect",
+    "sample",
+    "sync_sheets",
+    "to_source",
+    "write_medial",
+]
+
+__version__ = "0.1.0"
+
+
+def add_to_document(doc, source, spacing=0.0, theta=5.0, rho=8.0, **options):
+    """Parametric MedialAxis objects for every solid of `source` (a document
+    object with a Shape); returns the list of created objects. See
+    cadmedial.document.add_to_document."""
+    from . import document
+
+    return document.add_to_document(doc, source, spacing=spacing, theta=theta, rho=rho, **options)
+
+
+def sync_sheets(medial_obj):
+    """Creates / removes the per-sheet child objects of a MedialAxis object so
+    they match its last result (done automatically after each recompute)."""
+    from . import document
+
+    return document.sync_sheets(medial_obj)

@@ -1,0 +1,377 @@
+"""compute / sample / inspect: the C++ pipeline behind a small Python API.
+
+Nothing here needs FreeCAD: a source is BREP text, a file name, or anything
+with ``exportBrepToString()`` (a FreeCAD ``Part.Shape``) or a ``Shape``
+attribute (a FreeCAD document object).
+"""
+
+import math
+import os
+
+import numpy as np
+
+try:
+    from . import _native
+except ImportError as _error:  # pragma: no cover - depends on the installation
+    raise ImportError(
+        "cadmedial: the compiled module cadmedial._native is missing or does not load "
+        f"({_error}). Build the CMake target cadmedial_python and run plugin/install.sh."
+    ) from _error
+
+#: Unreadable input or no closed solid (a ValueError; ``exit_code`` as in the CLI).
+InputError = _native.InputError
+#: Raised when a progress callback returns False or a cancel token is set.
+Cancelled = _native.Cancelled
+
+PROVENANCE_NAMES = ("delaunay_edge_facet", "convex_edge_triangle", "convex_edge_fill", "corner_triangle")
+
+PAIR_MESH_MESSAGE = (
+    "the pair-mesh (DESIGN.md section 5) is not implemented yet; call with pair_mesh=False"
+)
+
+
+def _label(obj):
+    return getattr(obj, "Label", None) or getattr(obj, "Name", None) or type(obj).__name__
+
+
+def to_source(source):
+    """BREP text or a file name for the C++ side.
+
+    Accepts a FreeCAD document object (its ``Shape``), a ``Part.Shape``, a
+    path (str or os.PathLike), BREP text (str or bytes)."""
+    if source is None:
+        raise ValueError("no source given: expected a solid, a shape, a file name or BREP text")
+    if hasattr(source, "exportBrepToString"):
+        if source.isNull():
+            raise ValueError("the shape is empty (null shape)")
+        return source.exportBrepToString()
+    if hasattr(source, "TypeId") and hasattr(source, "Document"):  # a FreeCAD document object
+        shape = getattr(source, "Shape", None)
+        if shape is None:
+            raise ValueError(f"'{_label(source)}' ({source.TypeId}) has no shape, so no solid")
+        if shape.isNull():
+            raise ValueError(f"'{_label(source)}' has an empty shape (recompute it first?)")
+        return shape.exportBrepToString()
+    if isinstance(source, bytes):
+        return source.decode("utf-8", errors="replace")
+    if isinstance(source, os.PathLike):
+        return os.fspath(source)
+    if isinstance(source, str):
+        return source
+    raise TypeError(
+        f"cannot use a {type(source).__name__} as a source: expected a FreeCAD shape or object, "
+        "a file name or BREP text"
+    )
+
+
+def _with_cancel(progress, cancel):
+    """One callback for the C++ side out of a progress callback and a cancel
+    token (anything with is_set(), e.g. threading.Event)."""
+    if cancel is None:
+        return progress
+
+    def callback(stage, solid, solids):
+        if cancel.is_set():
+            return False
+        if progress is not None:
+            return progress(stage, solid, solids)
+        return None
+
+    return callback
+
+
+class MedialAxisResult:
+    """The inner medial axis of one solid.
+
+    Arrays: ``vertices`` (N x 3), ``radius`` (N), polygons as ``offsets``
+    (P + 1) and ``indices`` (polygon i = indices[offsets[i]:offsets[i+1]]),
+    ``sheet`` (P), ``provenance`` (P, see PROVENANCE_NAMES). Numbers:
+    ``sheet_count``, ``samples``, ``spacing``, ``beta0``, ``beta1``,
+    ``seconds``; ``warnings``; ``summary`` (the dict of summary.json)."""
+
+    ARRAYS = ("vertices", "radius", "offsets", "indices", "sheet", "provenance")
+
+    def __init__(self, data, theta=5.0, rho=8.0):
+        self.solid = int(data.get("solid", 0))
+        self.vertices = np.asarray(data["vertices"], dtype=np.float64).reshape(-1, 3)
+        self.radius = np.asarray(data["radius"], dtype=np.float64)
+        self.offsets = np.asarray(data["offsets"], dtype=np.int64)
+        self.indices = np.asarray(data["indices"], dtype=np.int64)
+        self.sheet = np.asarray(data["sheet"], dtype=np.int64)
+        self.provenance = np.asarray(data["provenance"], dtype=np.uint8)
+        self.sheet_count = int(data.get("sheet_count", int(self.sheet.max()) + 1 if self.sheet.size else 0))
+        self.samples = int(data.get("samples", 0))
+        self.spacing = float(data.get("spacing", 0.0))
+        self.beta0 = int(data.get("beta0", -1))
+        self.beta1 = int(data.get("beta1", -1))
+        self.seconds = float(data.get("seconds", 0.0))
+        self.warnings = list(data.get("warnings", []))
+        self.summary = dict(data.get("summary", {}))
+        self.theta = float(theta)
+        self.rho = float(rho)
+        self._triangles = None
+
+    # -- sizes ---------------------------------------------------------------
+    @property
+    def polygon_count(self):
+        return int(self.offsets.size - 1)
+
+    @property
+    def vertex_count(self):
+        return int(self.vertices.shape[0])
+
+    def polygon(self, i):
+        return self.indices[self.offsets[i] : self.offsets[i + 1]]
+
+    def __repr__(self):
+        return (
+            f"<MedialAxisResult solid {self.solid}: {self.vertex_count} vertices, {self.polygon_count} polygons, "
+            f"{self.sheet_count} sheets, beta0/beta1 {self.beta0}/{self.beta1}, {self.samples} samples>"
+        )
+
+    # -- triangles -------------------------------------------------------------
+    def triangles(self):
+        """Fan triangulation of the polygons: (triangles T x 3, polygon of each
+        triangle T). Triangles with a repeated vertex are left out."""
+        if self._triangles is None:
+            sizes = np.diff(self.offsets)
+            fan = np.maximum(sizes - 2, 0)
+            polygon = np.repeat(np.arange(sizes.size, dtype=np.int64), fan)
+            first = self.offsets[:-1][polygon]
+            within = np.arange(polygon.size, dtype=np.int64) - np.repeat(np.cumsum(fan) - fan, fan)
+            tri = np.stack(
+                [self.indices[first], self.indices[first + 1 + within], self.indices[first + 2 + within]], axis=1
+            )
+            keep = (tri[:, 0] != tri[:, 1]) & (tri[:, 1] != tri[:, 2]) & (tri[:, 0] != tri[:, 2])
+            self._triangles = (tri[keep], polygon[keep])
+        return self._triangles
+
+    def sheet_sizes(self):
+        """Polygons per sheet id."""
+        return np.bincount(self.sheet, minlength=self.sheet_count)
+
+    def sheet_ranks(self):
+        """Rank of every sheet id by size (0 = the sheet with most polygons)."""
+        order = np.argsort(-self.sheet_sizes(), kind="stable")
+        ranks = np.empty_like(order)
+        ranks[order] = np.arange(order.size)
+        return ranks
+
+    def submesh(self, polygon_mask):
+        """(points K x 3, triangles T x 3 into points, global vertex ids K) of
+        the polygons selected by a boolean mask, with unused vertices dropped."""
+        tri, poly = self.triangles()
+        tri = tri[polygon_mask[poly]]
+        used, inverse = np.unique(tri.reshape(-1), return_inverse=True)
+        return self.vertices[used], inverse.reshape(-1, 3), used
+
+    def subset(self, polygon_mask):
+        """A MedialAxisResult with only the selected polygons (vertices renumbered;
+        sheet ids, provenance and the summary kept)."""
+        polygon_mask = np.asarray(polygon_mask, dtype=bool)
+        sizes = np.diff(self.offsets)
+        slot_mask = np.repeat(polygon_mask, sizes)
+        kept = self.indices[slot_mask]
+        used, inverse = np.unique(kept, return_inverse=True)
+        data = {
+            "solid": self.solid,
+            "vertices": self.vertices[used],
+            "radius": self.radius[used],
+            "offsets": np.concatenate([[0], np.cumsum(sizes[polygon_mask])]),
+            "indices": inverse,
+            "sheet": self.sheet[polygon_mask],
+            "provenance": self.provenance[polygon_mask],
+            "sheet_count": self.sheet_count,
+            "samples": self.samples,
+            "spacing": self.spacing,
+            "beta0": self.beta0,
+            "beta1": self.beta1,
+            "seconds": self.seconds,
+            "warnings": self.warnings,
+            "summary": self.summary,
+        }
+        return MedialAxisResult(data, self.theta, self.rho)
+
+    # -- output ------------------------------------------------------------------
+    def write(self, path, format=None):
+        """Writes .ply (radius per vertex, sheet and provenance per polygon),
+        .obj (groups per sheet) or .ma (Q-MAT); atomically."""
+        from .export import write_medial
+
+        return write_medial(self, path, format)
+
+    def to_mesh(self, polygon_mask=None):
+        """A FreeCAD Mesh.Mesh of the (selected) polygons, fan-triangulated,
+        with the vertices in the order of self.vertices (all of them if no
+        mask is given). Needs FreeCAD."""
+        from .document import _mesh
+
+        if polygon_mask is None:
+            return _mesh(self.vertices, self.triangles()[0])
+        points, tri, _ = self.submesh(polygon_mask)
+        return _mesh(points, tri)
+
+    def to_npz(self, path):
+        import json
+
+        np.savez_compressed(
+            path,
+            **{name: getattr(self, name) for name in self.ARRAYS},
+            meta=np.frombuffer(
+                json.dumps(
+                    {
+                        "solid": self.solid,
+                        "sheet_count": self.sheet_count,
+                        "samples": self.samples,
+                        "spacing": self.spacing,
+                        "beta0": self.beta0,
+                        "beta1": self.beta1,
+                        "seconds": self.seconds,
+                        "warnings": self.warnings,
+                        "summary": self.summary,
+                        "theta": self.theta,
+                        "rho": self.rho,
+                    }
+                ).encode("utf-8"),
+                dtype=np.uint8,
+            ),
+        )
+
+    @classmethod
+    def from_npz(cls, path):
+        import json
+
+        with np.load(path) as z:
+            meta = json.loads(bytes(z["meta"]).decode("utf-8"))
+            data = dict(meta)
+            for name in cls.ARRAYS:
+                data[name] = z[name]
+        return cls(data, meta.get("theta", 5.0), meta.get("rho", 8.0))
+
+
+class SampleResult:
+    """Boundary samples of one solid: ``points`` (N x 3), ``kind`` (0 face,
+    1 edge, 2 vertex), ``owner``, ``on_convex_edge``, ``nonconcave_corner``,
+    ``triplets`` (T x 3), ``triangles`` (M x 3, the stitched boundary
+    reconstruction), ``triangle_face``, ``spacing``, ``warnings``, ``report``."""
+
+    def __init__(self, data):
+        self.__dict__.update(data)
+
+    def __len__(self):
+        return int(self.points.shape[0])
+
+    def __repr__(self):
+        return (
+            f"<SampleResult solid {self.solid}: {len(self)} samples, {self.triplets.shape[0]} triplets, "
+            f"{self.triangles.shape[0]} boundary triangles, spacing {self.spacing:.4g}>"
+        )
+
+
+def _check_params(spacing, theta, rho):
+    for name, value in (("spacing", spacing), ("theta", theta), ("rho", rho)):
+        if not isinstance(value, (int, float)) or isinstance(value, bool) or not math.isfinite(value):
+            raise ValueError(f"{name} must be a finite number, got {value!r}")
+
+
+def compute(source, spacing=0.0, theta=5.0, rho=8.0, pair_mesh=False, check_inside=True, progress=None, cancel=None):
+    """Inner medial axis of every closed solid of `source`; one MedialAxisResult per solid.
+
+    source: FreeCAD object / Part.Shape / file name / BREP text.
+    spacing: sample spacing in model units (0 = bounding-box diagonal / 40).
+    theta (degrees), rho: the Angle and Ratio conditions of CAD_MEDIAL.
+    pair_mesh: not implemented yet (raises NotImplementedError if True).
+    check_inside: count disagreements of the inner/outer walk with OCCT's exact
+      classifier (summary["diagnostics"]["walk_oracle_disagreements"]).
+    progress(stage, solid, solids): called between stages ("read", "sample",
+      "medial", "done"); return False to stop (raises Cancelled).
+    cancel: a threading.Event (or anything with is_set()); when set, the run
+      stops at the next stage boundary with Cancelled.
+
+    The GIL is released while C++ runs, so this can run in a worker thread.
+    Raises InputError (a ValueError) for unreadable input or no closed solid.
+    """
+    if pair_mesh:
+        raise NotImplementedError(PAIR_MESH_MESSAGE)
+    _check_params(spacing, theta, rho)
+    raw = _native.compute(
+        to_source(source), float(spacing), float(theta), float(rho), bool(check_inside), _with_cancel(progress, cancel)
+    )
+    return [MedialAxisResult(d, theta, rho) for d in raw]
+
+
+def sample(source, spacing=0.0, progress=None, cancel=None):
+    """Boundary samples of every closed solid of `source`; one SampleResult per solid."""
+    _check_params(spacing, 5.0, 8.0)
+    raw = _native.sample(to_source(source), float(spacing), _with_cancel(progress, cancel))
+    return [SampleResult(d) for d in raw]
+
+
+def inspect(source):
+    """Per closed solid: default_spacing, area, volume, bbox_diagonal (fast, no sampling)."""
+    return _native.inspect(to_source(source))
+
+
+# Sample counts per unit of area / h_face^2 and of edge length / h_edge,
+# fitted on the bundled models at 0.5, 1 and 2 x the default spacing
+# (plugin/tools/calibrate_estimate.py: within 10 %, mostly within 2 %).
+_FACE_DENSITY = 1.0056
+_EDGE_DENSITY = 1.0281
+_MIN_SPACING_FRACTION = 1.0 / 16
+
+
+def _face_min_radius(face):
+    """Smallest principal radius of curvature of a face (inf if flat), from the
+    surface type where it is known, else from a 5 x 5 UV probe."""
+    surface = face.Surface
+    kind = type(surface).__name__
+    if kind == "Plane":
+        return math.inf
+    if kind in ("Cylinder", "Sphere"):
+        return float(surface.Radius)
+    if kind == "Cone":
+        return max(float(surface.Radius), 1e-9) if surface.Radius > 0 else math.inf
+    if kind == "Toroid":
+        return float(surface.MinorRadius)
+    u0, u1, v0, v1 = face.ParameterRange
+    best = math.inf
+    for i in range(5):
+        for j in range(5):
+            u = u0 + (u1 - u0) * (i + 0.5) / 5
+            v = v0 + (v1 - v0) * (j + 0.5) / 5
+            try:
+                k1, k2 = face.curvatureAt(u, v)
+            except Exception:  # noqa: BLE001 - undefined curvature at a pole
+                continue
+            k = max(abs(k1), abs(k2))
+            if k > 1e-12:
+                best = min(best, 1.0 / k)
+    return best
+
+
+def estimate_samples(shape, spacing=0.0):
+    """Quick estimate of the sample count of a FreeCAD solid at `spacing`
+    (0 = default), from face areas, curvature and edge lengths; no sampling.
+    Follows the spacing rules of sampling/ (curved faces down to 0.2 x radius,
+    never below h/16)."""
+    box = shape.BoundBox
+    h = float(spacing) if spacing and spacing > 0 else box.DiagonalLength / 40.0
+    if h <= 0:
+        return 0
+    face_count = 0.0
+    for face in shape.Faces:
+        hf = min(h, 0.2 * _face_min_radius(face))
+        hf = max(hf, h * _MIN_SPACING_FRACTION)
+        face_count += _FACE_DENSITY * face.Area / (hf * hf)
+    edge_count = 0.0
+    for edge in shape.Edges:
+        radius = math.inf
+        try:
+            curve = edge.Curve
+            if hasattr(curve, "Radius"):
+                radius = float(curve.Radius)
+        except Exception:  # noqa: BLE001
+            pass
+        he = max(min(h, 0.2 * radius), h * _MIN_SPACING_FRACTION)
+        edge_count += _EDGE_DENSITY * edge.Length / he
+    return int(round(face_count + edge_count + len(shape.Vertexes)))

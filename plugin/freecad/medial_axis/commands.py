@@ -1,0 +1,225 @@
+"""Commands of the Medial Axis workbench.
+
+MedialAxis_Compute    task panel, then one parametric MedialAxis per selected solid
+MedialAxis_Export     selected medial axes / sheets to .ply, .obj or .ma
+MedialAxis_Evaluate   the checks available so far (topology, walk vs exact classifier)
+MedialAxis_PairMesh   not available yet (DESIGN.md section 5)
+MedialAxis_IsoSurface not available yet (DESIGN.md section 5)
+
+Errors go to the Report view (and the status bar); commands never raise into
+FreeCAD and never open a modal dialog on error.
+"""
+
+import os
+
+import FreeCAD as App
+import FreeCADGui as Gui
+
+from . import icon
+
+TOOLBAR = ["MedialAxis_Compute", "Separator", "MedialAxis_Export", "MedialAxis_Evaluate", "Separator",
+           "MedialAxis_PairMesh", "MedialAxis_IsoSurface"]
+MENU = TOOLBAR
+CONTEXT_MENU = ["MedialAxis_Compute", "MedialAxis_Export", "MedialAxis_Evaluate"]
+
+
+def report_error(message):
+    App.Console.PrintError(f"Medial Axis: {message}\n")
+    try:
+        Gui.getMainWindow().statusBar().showMessage(f"Medial Axis: {message}", 15000)
+    except Exception:  # noqa: BLE001
+        pass
+
+
+def report_message(message):
+    App.Console.PrintMessage(f"Medial Axis: {message}\n")
+    try:
+        Gui.getMainWindow().statusBar().showMessage(f"Medial Axis: {message}", 10000)
+    except Exception:  # noqa: BLE001
+        pass
+
+
+def _document():
+    return App.ActiveDocument
+
+
+def selected_objects():
+    if _document() is None:
+        return []
+    return list(Gui.Selection.getSelection())
+
+
+def solid_sources(objects):
+    """(sources with their solid counts, error messages for the rest)."""
+    from cadmedial import document
+
+    sources, errors = [], []
+    for obj in objects:
+        if document.is_medial(obj) or document.is_sheet(obj):
+            errors.append(f"'{obj.Label}' is a medial axis itself; select the solid it was made from")
+            continue
+        try:
+            sources.append((obj, len(document.source_solids(obj))))
+        except ValueError as e:
+            errors.append(str(e))
+    return sources, errors
+
+
+def selected_medial_objects():
+    from cadmedial import document
+
+    return [o for o in selected_objects() if document.is_medial(o) or document.is_sheet(o)]
+
+
+class ComputeCommand:
+    def GetResources(self):
+        return {
+            "Pixmap": icon("MedialAxis.svg"),
+            "MenuText": "Medial Axis",
+            "Accel": "M, A",
+            "ToolTip": "Inner medial axis of the selected solids: one parametric MedialAxis object per solid, "
+            "with one mesh per medial sheet. Opens a task panel for the sample spacing and the "
+            "CAD_MEDIAL parameters (theta, rho).",
+        }
+
+    def IsActive(self):
+        return _document() is not None and bool(Gui.Selection.getSelection())
+
+    def Activated(self):
+        try:
+            objects = selected_objects()
+            if not objects:
+                report_error("select one or more solids first")
+                return
+            sources, errors = solid_sources(objects)
+            for e in errors:
+                report_error(e)
+            if not sources:
+                report_error("nothing to do: the selection holds no solid")
+                return
+            if Gui.Control.activeDialog():
+                report_error("close the open task panel first")
+                return
+            from . import task_panel
+
+            Gui.Control.showDialog(task_panel.MedialAxisTaskPanel(sources=[s for s, _ in sources]))
+        except Exception as e:  # noqa: BLE001 - never let an exception reach FreeCAD
+            report_error(f"{type(e).__name__}: {e}")
+
+
+class ExportCommand:
+    FILTERS = "PLY, radius and sheet ids (*.ply);;Wavefront OBJ, groups per sheet (*.obj);;Q-MAT medial mesh (*.ma)"
+
+    def GetResources(self):
+        return {
+            "Pixmap": icon("Export.svg"),
+            "MenuText": "Export medial axis...",
+            "ToolTip": "Write the selected medial axes or sheets to .ply (radius per vertex, sheet and "
+            "provenance per polygon), .obj (groups per sheet) or .ma (Q-MAT)",
+        }
+
+    def IsActive(self):
+        return bool(selected_medial_objects())
+
+    def Activated(self):
+        from PySide2 import QtWidgets
+
+        from cadmedial import document
+
+        objects = selected_medial_objects()
+        if not objects:
+            report_error("select a medial axis or a sheet to export")
+            return
+        start = os.path.join(_start_dir(), _safe_name(objects[0].Label) + ".ply")
+        path, chosen = QtWidgets.QFileDialog.getSaveFileName(Gui.getMainWindow(), "Export medial axis", start,
+                                                             self.FILTERS)
+        if not path:
+            return
+        if not os.path.splitext(path)[1]:
+            path += "." + ("obj" if "obj" in chosen else "ma" if ".ma" in chosen else "ply")
+        stem, ext = os.path.splitext(path)
+        for obj in objects:
+            target = path if len(objects) == 1 else f"{stem}_{_safe_name(obj.Label)}{ext}"
+            try:
+                document.export(obj, target)
+                report_message(f"wrote {target}")
+            except Exception as e:  # noqa: BLE001
+                report_error(f"could not export '{obj.Label}' to {target}: {e}")
+
+
+def _start_dir():
+    doc = _document()
+    if doc is not None and doc.FileName:
+        return os.path.dirname(doc.FileName)
+    return os.path.expanduser("~")
+
+
+def _safe_name(label):
+    return "".join(c if c.isalnum() or c in "-_." else "_" for c in label) or "medial"
+
+
+class EvaluateCommand:
+    def GetResources(self):
+        return {
+            "Pixmap": icon("Evaluate.svg"),
+            "MenuText": "Evaluate medial axis",
+            "ToolTip": "Check the selected medial axes: topology against the solid and the inner/outer walk "
+            "against the exact classifier. The exact-geometry evaluation (inside, medialness, coverage, "
+            "attachment) is not available yet.",
+        }
+
+    def IsActive(self):
+        return bool(selected_medial_objects())
+
+    def Activated(self):
+        from cadmedial import document
+
+        for obj in selected_medial_objects():
+            if document.is_sheet(obj):
+                obj = obj.MedialAxis
+            try:
+                lines = document.evaluate(obj)
+            except Exception as e:  # noqa: BLE001
+                report_error(f"could not evaluate '{obj.Label}': {e}")
+                continue
+            App.Console.PrintMessage(f"Medial Axis: evaluation of '{obj.Label}':\n")
+            for line in lines:
+                App.Console.PrintMessage(f"  {line}\n")
+            report_message(f"evaluation of '{obj.Label}' written to the Report view")
+
+
+class NotYetCommand:
+    def __init__(self, pixmap, text, what):
+        self.pixmap, self.text, self.what = pixmap, text, what
+
+    def GetResources(self):
+        return {
+            "Pixmap": icon(self.pixmap),
+            "MenuText": self.text + " (not available yet)",
+            "ToolTip": f"{self.what} Comes later (DESIGN.md section 5); not available yet.",
+        }
+
+    def IsActive(self):
+        return False
+
+    def Activated(self):
+        report_error(f"{self.text} is not available yet")
+
+
+_registered = False
+
+
+def register():
+    global _registered
+    if _registered:
+        return
+    Gui.addCommand("MedialAxis_Compute", ComputeCommand())
+    Gui.addCommand("MedialAxis_Export", ExportCommand())
+    Gui.addCommand("MedialAxis_Evaluate", EvaluateCommand())
+    Gui.addCommand("MedialAxis_PairMesh", NotYetCommand(
+        "PairMesh.svg", "Pair-Mesh",
+        "Pair-mesh: a FEM tetrahedral mesh linking the medial sheets and the boundary."))
+    Gui.addCommand("MedialAxis_IsoSurface", NotYetCommand(
+        "IsoSurface.svg", "Iso-surface",
+        "Iso-surfaces between the medial axis (t = 0) and the boundary (t = 1) from the pair-mesh."))
+    _registered = True

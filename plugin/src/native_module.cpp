@@ -1,0 +1,469 @@
+// cadmedial._native: the C++ pipeline (sampling/, core/) for Python.
+//
+// Shapes come in as BREP text (FreeCAD's Shape.exportBrepToString()) or as a
+// path to a .step/.stp/.iges/.igs/.brep file; results go out as dicts of numpy
+// arrays. The GIL is released while C++ runs, so a GUI can poll a worker
+// thread. The pure-Python package `cadmedial` (plugin/cadmedial/) wraps this.
+//
+// CGAL (core) headers come before any OCCT header: OCCT's `Handle` macro
+// breaks CGAL's own `Handle` templates.
+#include "cadmedial/medial.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstring>
+#include <exception>
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <BRepBndLib.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepGProp.hxx>
+#include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
+#include <Standard_Failure.hxx>
+#include <TopoDS_Solid.hxx>
+
+#include "atomic_file.hpp"
+#include "cadmedial/brep_io.hpp"
+#include "cadmedial/errors.hpp"
+#include "cadmedial/sampling.hpp"
+#include "medial_summary.hpp"
+#include "medial_writers.hpp"
+#include "report_json.hpp"
+
+namespace py = pybind11;
+
+namespace cadmedial {
+namespace {
+
+// Raised (as cadmedial.Cancelled) when the progress callback asks to stop.
+struct CancelledError : std::runtime_error {
+  CancelledError() : std::runtime_error("cancelled") {}
+};
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// ---------------------------------------------------------------------------
+// Input: BREP text or a file name.
+
+bool looksLikeBrepText(const std::string& s) {
+  // BRepTools::Write starts with "DBRep_DrawableShape" and/or "CASCADE Topology V";
+  // a file name never holds a newline.
+  return s.find('\n') != std::string::npos || s.rfind("CASCADE Topology", 0) == 0 ||
+         s.rfind("DBRep_DrawableShape", 0) == 0;
+}
+
+std::string describeShape(const ShapeCensus& c) {
+  if (c.faces == 0) return "it holds nothing (no faces)";
+  std::string s = "it holds ";
+  if (c.solids > 0) s += std::to_string(c.solids) + " solid(s) without a closed shell, ";
+  s += std::to_string(c.shells) + " shell(s) (" + std::to_string(c.openShells) + " open), " +
+       std::to_string(c.faces) + " face(s)";
+  return s;
+}
+
+struct Input {
+  std::string name;  // file name or "BREP text"
+  std::vector<TopoDS_Solid> solids;
+  std::vector<std::string> warnings;
+};
+
+Input readInput(const std::string& source) {
+  Input in;
+  if (source.empty()) throw InputError(kExitUnreadableInput, "empty input: expected BREP text or a file name");
+  if (looksLikeBrepText(source)) {
+    in.name = "BREP text";
+    const TopoDS_Shape shape = readBrepString(source);
+    in.solids = closedSolidsOf(shape, &in.warnings);
+    if (in.solids.empty())
+      throw InputError(kExitNoSolid, "the shape has no closed solid; " + describeShape(takeCensus(shape)));
+  } else {
+    LoadedModel model = loadModel(source);
+    in.name = source;
+    in.solids = std::move(model.solids);
+    in.warnings = std::move(model.warnings);
+  }
+  return in;
+}
+
+// ---------------------------------------------------------------------------
+// Progress: progress(stage: str, solid: int, solids: int) -> bool | None,
+// called with the GIL held between stages; False stops the run.
+
+class Progress {
+ public:
+  explicit Progress(py::object callback) : callback_(std::move(callback)) {}
+
+  // Called without the GIL. Throws CancelledError if the callback says stop
+  // (or raised: its exception is kept and rethrown by rethrowPending()).
+  void report(const char* stage, std::size_t solid, std::size_t solids) {
+    if (callback_.is_none()) return;
+    bool stop = false;
+    {
+      py::gil_scoped_acquire gil;
+      try {
+        py::object r = callback_(stage, solid, solids);
+        stop = !r.is_none() && !r.cast<bool>();
+      } catch (...) {
+        pending_ = std::current_exception();
+        stop = true;
+      }
+    }
+    if (stop) throw CancelledError();
+  }
+
+  // With the GIL held: rethrows an exception raised by the callback itself.
+  void rethrowPending() {
+    if (pending_) {
+      std::exception_ptr e = pending_;
+      pending_ = nullptr;
+      std::rethrow_exception(e);
+    }
+  }
+
+ private:
+  py::object callback_;
+  std::exception_ptr pending_;
+};
+
+// Runs `work` without the GIL and turns OCCT failures into std exceptions.
+template <class Work>
+void runWithoutGil(Progress& progress, Work&& work) {
+  std::exception_ptr error;
+  {
+    py::gil_scoped_release release;
+    try {
+      try {
+        work();
+      } catch (const Standard_Failure& f) {
+        throw std::runtime_error(std::string("OpenCASCADE failure: ") + f.GetMessageString());
+      }
+    } catch (...) {
+      error = std::current_exception();
+    }
+  }
+  progress.rethrowPending();
+  if (error) std::rethrow_exception(error);
+}
+
+// ---------------------------------------------------------------------------
+// numpy helpers (GIL held).
+
+template <class T>
+py::array_t<T> toArray(const std::vector<T>& v) {
+  py::array_t<T> a(static_cast<py::ssize_t>(v.size()));
+  if (!v.empty()) std::memcpy(a.mutable_data(), v.data(), v.size() * sizeof(T));
+  return a;
+}
+
+template <class T, std::size_t N, class Out = T>
+py::array_t<Out> toArray2(const std::vector<std::array<T, N>>& v) {
+  py::array_t<Out> a({static_cast<py::ssize_t>(v.size()), static_cast<py::ssize_t>(N)});
+  auto m = a.template mutable_unchecked<2>();
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (std::size_t k = 0; k < N; ++k) m(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(k)) = static_cast<Out>(v[i][k]);
+  return a;
+}
+
+template <class Out, class In>
+py::array_t<Out> castArray(const std::vector<In>& v) {
+  py::array_t<Out> a(static_cast<py::ssize_t>(v.size()));
+  Out* d = a.mutable_data();
+  for (std::size_t i = 0; i < v.size(); ++i) d[i] = static_cast<Out>(v[i]);
+  return a;
+}
+
+py::object jsonToPython(const nlohmann::json& j) {
+  return py::module_::import("json").attr("loads")(j.dump());
+}
+
+py::list toList(const std::vector<std::string>& v) {
+  py::list l;
+  for (const auto& s : v) l.append(py::str(s));
+  return l;
+}
+
+// ---------------------------------------------------------------------------
+// compute / sample
+
+struct SolidRun {
+  SolidSampling sampled;
+  MedialResult medial;
+  double secondsRead = 0;
+};
+
+InsideOracle makeOracle(BRepClass3d_SolidClassifier& classifier) {
+  return [&classifier](const Vec3& p) {
+    classifier.Perform(gp_Pnt(p[0], p[1], p[2]), 1e-9);
+    return classifier.State() == TopAbs_IN;
+  };
+}
+
+py::list compute(const std::string& source, double spacing, double theta, double rho, bool checkInside,
+                 py::object progressCallback) {
+  if (!(spacing >= 0)) throw py::value_error("spacing must be >= 0 (0 = automatic), got " + std::to_string(spacing));
+  if (!(theta >= 0 && theta < 90)) throw py::value_error("theta must be in [0, 90) degrees, got " + std::to_string(theta));
+  if (!(rho > 0)) throw py::value_error("rho must be > 0, got " + std::to_string(rho));
+  MedialParams params = MedialParams::cad();
+  params.thetaDeg = theta;
+  params.rho = rho;
+
+  Progress progress(std::move(progressCallback));
+  Input input;
+  std::vector<SolidRun> runs;
+  runWithoutGil(progress, [&] {
+    progress.report("read", 0, 0);
+    const auto t = Clock::now();
+    input = readInput(source);
+    const double secondsRead = secondsSince(t);
+    const std::size_t n = input.solids.size();
+    runs.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      runs[i].secondsRead = secondsRead;
+      progress.report("sample", i, n);
+      SamplingParams sp;
+      sp.spacing = spacing;
+      runs[i].sampled = sampleSolid(input.solids[i], sp);
+      progress.report("medial", i, n);
+      InsideOracle oracle;
+      BRepClass3d_SolidClassifier classifier(input.solids[i]);
+      if (checkInside) oracle = makeOracle(classifier);
+      runs[i].medial = computeCadMedial(runs[i].sampled.samples, params, oracle);
+    }
+    progress.report("done", n, n);
+  });
+
+  py::list out;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const MedialResult& m = runs[i].medial;
+    const SolidSampling& s = runs[i].sampled;
+    nlohmann::json summary = medialSummaryJson(s.report, m, params);
+    summary["model"] = input.name;
+    summary["solid"] = i;
+    summary["spacing"] = s.samples.spacing;
+    summary["seconds"]["read"] = runs[i].secondsRead;
+    const double seconds =
+        s.report.secondsClassify + s.report.secondsSample + s.report.secondsReconstruct + m.times.total;
+    summary["seconds"]["total"] = seconds;
+
+    py::dict d;
+    d["solid"] = i;
+    d["vertices"] = toArray2<double, 3>(m.vertices);
+    d["radius"] = toArray(m.radius);
+    d["offsets"] = castArray<std::int64_t>(m.polygonOffsets);
+    d["indices"] = castArray<std::int64_t>(m.polygonVertices);
+    d["sheet"] = castArray<std::int64_t>(m.sheet);
+    d["provenance"] = castArray<std::uint8_t>(m.provenance);
+    d["sheet_count"] = m.sheetCount;
+    d["samples"] = s.samples.size();
+    d["spacing"] = s.samples.spacing;
+    d["beta0"] = m.topology.beta0;
+    d["beta1"] = m.topology.beta1;
+    d["seconds"] = seconds;
+    std::vector<std::string> warnings = input.warnings;
+    warnings.insert(warnings.end(), s.report.warnings.begin(), s.report.warnings.end());
+    d["warnings"] = toList(warnings);
+    d["summary"] = jsonToPython(summary);
+    out.append(d);
+  }
+  return out;
+}
+
+py::list sample(const std::string& source, double spacing, py::object progressCallback) {
+  if (!(spacing >= 0)) throw py::value_error("spacing must be >= 0 (0 = automatic), got " + std::to_string(spacing));
+  Progress progress(std::move(progressCallback));
+  Input input;
+  std::vector<SolidSampling> runs;
+  runWithoutGil(progress, [&] {
+    progress.report("read", 0, 0);
+    input = readInput(source);
+    const std::size_t n = input.solids.size();
+    runs.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      progress.report("sample", i, n);
+      SamplingParams sp;
+      sp.spacing = spacing;
+      runs[i] = sampleSolid(input.solids[i], sp);
+    }
+    progress.report("done", n, n);
+  });
+
+  py::list out;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const SampleSet& s = runs[i].samples;
+    std::vector<std::array<Index, 3>> triplets;
+    triplets.reserve(s.triplets.size());
+    for (const Triplet& t : s.triplets) triplets.push_back({t.s, t.sLeft, t.sRight});
+    py::dict d;
+    d["solid"] = i;
+    d["points"] = toArray2<double, 3>(s.points);
+    d["kind"] = castArray<std::uint8_t>(s.kind);
+    d["owner"] = toArray(s.owner);
+    d["on_convex_edge"] = toArray(s.onConvexEdge);
+    d["nonconcave_corner"] = toArray(s.isNonConcaveCorner);
+    d["triplets"] = toArray2<Index, 3, std::int64_t>(triplets);
+    d["triangles"] = toArray2<Index, 3, std::int64_t>(s.triangles);
+    d["triangle_face"] = toArray(s.triangleFace);
+    d["spacing"] = s.spacing;
+    std::vector<std::string> warnings = input.warnings;
+    warnings.insert(warnings.end(), runs[i].report.warnings.begin(), runs[i].report.warnings.end());
+    d["warnings"] = toList(warnings);
+    d["report"] = jsonToPython(toJson(runs[i].report));
+    out.append(d);
+  }
+  return out;
+}
+
+// Cheap facts per solid (no sampling): for spacing defaults and estimates.
+py::list inspect(const std::string& source) {
+  Progress none{py::none()};
+  Input input;
+  struct Facts {
+    double spacing, area, volume, diagonal;
+  };
+  std::vector<Facts> facts;
+  runWithoutGil(none, [&] {
+    input = readInput(source);
+    for (const TopoDS_Solid& solid : input.solids) {
+      GProp_GProps surface, volume;
+      BRepGProp::SurfaceProperties(solid, surface);
+      BRepGProp::VolumeProperties(solid, volume);
+      Bnd_Box box;
+      BRepBndLib::Add(solid, box);
+      facts.push_back({defaultSpacing(solid), surface.Mass(), volume.Mass(),
+                       box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent())});
+    }
+  });
+  py::list out;
+  for (std::size_t i = 0; i < facts.size(); ++i) {
+    py::dict d;
+    d["solid"] = i;
+    d["default_spacing"] = facts[i].spacing;
+    d["area"] = facts[i].area;
+    d["volume"] = facts[i].volume;
+    d["bbox_diagonal"] = facts[i].diagonal;
+    d["warnings"] = toList(input.warnings);
+    out.append(d);
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------
+// Writers shared with the command line (OBJ grouped per sheet, Q-MAT .ma).
+
+MedialComplex complexFromArrays(const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
+                                const py::array_t<double, py::array::c_style | py::array::forcecast>& radius,
+                                const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& offsets,
+                                const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& indices,
+                                const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& sheet) {
+  if (vertices.ndim() != 2 || vertices.shape(1) != 3) throw py::value_error("vertices must be an N x 3 array");
+  const auto nv = static_cast<std::size_t>(vertices.shape(0));
+  if (radius.ndim() != 1 || static_cast<std::size_t>(radius.shape(0)) != nv)
+    throw py::value_error("radius must have one value per vertex");
+  if (offsets.ndim() != 1 || offsets.shape(0) < 1) throw py::value_error("offsets must be a 1-D array starting with 0");
+  const auto np = static_cast<std::size_t>(offsets.shape(0) - 1);
+  if (sheet.ndim() != 1 || static_cast<std::size_t>(sheet.shape(0)) != np)
+    throw py::value_error("sheet must have one value per polygon");
+  MedialComplex c;
+  c.vertices.resize(nv);
+  c.radius.assign(radius.data(), radius.data() + nv);
+  const double* v = vertices.data();
+  for (std::size_t i = 0; i < nv; ++i) c.vertices[i] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+  const std::int64_t* o = offsets.data();
+  const std::int64_t* ix = indices.data();
+  const auto ni = static_cast<std::int64_t>(indices.size());
+  c.polygonOffsets.assign(1, 0);
+  std::size_t sheets = 0;
+  for (std::size_t p = 0; p < np; ++p) {
+    if (o[p] < 0 || o[p + 1] < o[p] + 3 || o[p + 1] > ni)
+      throw py::value_error("offsets are not increasing by at least 3 within the index array");
+    c.polygonOffsets.push_back(static_cast<Index>(o[p + 1]));
+    if (sheet.data()[p] < 0) throw py::value_error("negative sheet id");
+    c.sheet.push_back(static_cast<Index>(sheet.data()[p]));
+    sheets = std::max(sheets, static_cast<std::size_t>(sheet.data()[p]) + 1);
+    c.provenance.push_back(PolygonProvenance::DelaunayEdgeFacet);
+  }
+  for (std::int64_t k = 0; k < ni; ++k) {
+    if (ix[k] < 0 || static_cast<std::size_t>(ix[k]) >= nv) throw py::value_error("vertex index out of range");
+    c.polygonVertices.push_back(static_cast<Index>(ix[k]));
+  }
+  c.sheetCount = sheets;
+  return c;
+}
+
+void writeMedial(const std::string& path, const std::string& format,
+                 const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
+                 const py::array_t<double, py::array::c_style | py::array::forcecast>& radius,
+                 const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& offsets,
+                 const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& indices,
+                 const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& sheet) {
+  if (format != "obj" && format != "ma") throw py::value_error("format must be 'obj' or 'ma', got '" + format + "'");
+  const MedialComplex c = complexFromArrays(vertices, radius, offsets, indices, sheet);
+  Progress none{py::none()};
+  runWithoutGil(none, [&] {
+    writeFileAtomically(path, [&](std::ofstream& out) {
+      if (format == "obj")
+        writeMedialObj(out, c);
+      else
+        writeMedialMa(out, c);
+    });
+  });
+}
+
+}  // namespace
+}  // namespace cadmedial
+
+PYBIND11_MODULE(_native, m) {
+  using namespace cadmedial;
+  m.doc() = "cadmedial C++ pipeline: sampling of OCCT solids and the CAD_MEDIAL inner medial axis";
+
+  static py::exception<InputError> inputError(m, "InputError", PyExc_ValueError);
+  static py::exception<CancelledError> cancelled(m, "Cancelled", PyExc_RuntimeError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const InputError& e) {
+      py::object err = py::handle(inputError.ptr())(e.what());
+      err.attr("exit_code") = static_cast<int>(e.code());
+      PyErr_SetObject(inputError.ptr(), err.ptr());
+    } catch (const CancelledError& e) {
+      cancelled(e.what());
+    }
+  });
+
+  m.def("compute", &compute, py::arg("source"), py::arg("spacing") = 0.0, py::arg("theta") = 5.0,
+        py::arg("rho") = 8.0, py::arg("check_inside") = true, py::arg("progress") = py::none(),
+        R"(Inner medial axis of every closed solid in `source` (BREP text or a file name).
+
+Returns a list with one dict per solid: vertices (N x 3), radius (N),
+offsets (P+1) and indices (polygon i = indices[offsets[i]:offsets[i+1]]),
+sheet (P), provenance (P; 0 facet, 1 convex-edge, 2 convex-edge fill,
+3 corner triangle), sheet_count, samples, spacing, beta0, beta1, seconds,
+warnings and summary (the summary.json of `cadmedial run`).
+spacing 0 = automatic (bounding-box diagonal / 40); theta in degrees.
+check_inside counts disagreements of the walk with OCCT's exact classifier.
+progress(stage, solid, solids) is called between stages with the GIL held;
+returning False raises Cancelled. The GIL is released while C++ runs.
+Raises InputError (a ValueError) for unreadable input or no closed solid.)");
+  m.def("sample", &sample, py::arg("source"), py::arg("spacing") = 0.0, py::arg("progress") = py::none(),
+        R"(Boundary samples of every closed solid in `source`: points (N x 3), kind (0 face,
+1 edge, 2 vertex), owner, on_convex_edge, nonconcave_corner, triplets (T x 3:
+s, s_left, s_right), triangles (M x 3, the stitched reconstruction),
+triangle_face, spacing, warnings and report (the sampling.json dict).)");
+  m.def("inspect", &inspect, py::arg("source"),
+        "Per closed solid: default_spacing, area, volume, bbox_diagonal (no sampling).");
+  m.def("write_medial", &writeMedial, py::arg("path"), py::arg("format"), py::arg("vertices"), py::arg("radius"),
+        py::arg("offsets"), py::arg("indices"), py::arg("sheet"),
+        "Writes a medial axis as 'obj' (groups per sheet) or 'ma' (Q-MAT), atomically, in the "
+        "command line's format.");
+  m.attr("PAIR_MESH_AVAILABLE") = false;
+}

@@ -1,0 +1,654 @@
+#include "cadmedial/exact_oracle.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <stdexcept>
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <Extrema_ExtPC.hxx>
+#include <Extrema_ExtPS.hxx>
+#include <Extrema_GenLocateExtPS.hxx>
+#include <Poly_Triangulation.hxx>
+#include <Precision.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+
+#include "feature_classification.hpp"
+#include "solid_topology.hpp"
+
+namespace cadmedial {
+
+namespace {
+
+
+// Closest point of triangle abc to p (Ericson, Real-Time Collision
+// Detection 5.1.5), as barycentric weights of a, b, c.
+std::array<double, 3> closestBarycentric(const gp_XYZ& p, const gp_XYZ& a, const gp_XYZ& b, const gp_XYZ& c) {
+  const gp_XYZ ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab * ap, d2 = ac * ap;
+  if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
+  const gp_XYZ bp = p - b;
+  const double d3 = ab * bp, d4 = ac * bp;
+  if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+    const double v = d1 / (d1 - d3);
+    return {1 - v, v, 0};
+  }
+  const gp_XYZ cp = p - c;
+  const double d5 = ab * cp, d6 = ac * cp;
+  if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+    const double w = d2 / (d2 - d6);
+    return {1 - w, 0, w};
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {0, 1 - w, w};
+  }
+  const double denom = 1.0 / (va + vb + vc);
+  const double v = vb * denom, w = vc * denom;
+  return {1 - v - w, v, w};
+}
+
+double boxDistance(const Bnd_Box& box, const gp_Pnt& p) {
+  if (box.IsVoid()) return std::numeric_limits<double>::infinity();
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  const double dx = std::max({x0 - p.X(), 0.0, p.X() - x1});
+  const double dy = std::max({y0 - p.Y(), 0.0, p.Y() - y1});
+  const double dz = std::max({z0 - p.Z(), 0.0, p.Z() - z1});
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+using Triangle = std::array<gp_XYZ, 3>;
+
+// Bounding-volume hierarchy over the mesh triangles. One traversal per query
+// visits every triangle within (nearest mesh distance + extra), nearest boxes
+// first, so the radius shrinks as soon as a close triangle is seen.
+class TriangleTree {
+ public:
+  void build(const std::vector<Triangle>& triangles) {
+    order_.resize(triangles.size());
+    for (std::uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;
+    nodes_.clear();
+    if (triangles.empty()) return;
+    nodes_.emplace_back();
+    buildNode(triangles, 0, 0, static_cast<std::uint32_t>(triangles.size()));
+  }
+
+  // visit(t) returns the distance from the query point to triangle t; the
+  // traversal skips boxes farther than (smallest distance seen + extra).
+  template <class Visit>
+  void query(const gp_XYZ& p, double extra, std::vector<std::pair<double, std::uint32_t>>& stack,
+             Visit&& visit) const {
+    if (nodes_.empty()) return;
+    double best = std::numeric_limits<double>::infinity();
+    stack.clear();
+    stack.emplace_back(boxDistance(nodes_[0], p), 0);
+    while (!stack.empty()) {
+      const auto [d, i] = stack.back();
+      stack.pop_back();
+      if (d > best + extra) continue;
+      const Node& node = nodes_[i];
+      if (node.left == 0) {
+        for (std::uint32_t k = node.begin; k < node.end; ++k) best = std::min(best, visit(order_[k]));
+        continue;
+      }
+      const double l = boxDistance(nodes_[node.left], p), r = boxDistance(nodes_[node.left + 1], p);
+      if (l < r) {
+        stack.emplace_back(r, node.left + 1);
+        stack.emplace_back(l, node.left);
+      } else {
+        stack.emplace_back(l, node.left);
+        stack.emplace_back(r, node.left + 1);
+      }
+    }
+  }
+
+ private:
+  struct Node {
+    gp_XYZ lo, hi;
+    std::uint32_t begin = 0, end = 0;
+    std::uint32_t left = 0;  // children at left and left + 1; 0 for a leaf
+  };
+  static double boxDistance(const Node& n, const gp_XYZ& p) {
+    double s = 0;
+    for (int k = 1; k <= 3; ++k) {
+      const double d = std::max({n.lo.Coord(k) - p.Coord(k), 0.0, p.Coord(k) - n.hi.Coord(k)});
+      s += d * d;
+    }
+    return std::sqrt(s);
+  }
+  // Fills nodes_[id] (already allocated) and, above 4 triangles, splits at
+  // the median centroid along the longest axis of the centroids' box.
+  void buildNode(const std::vector<Triangle>& tris, std::uint32_t id, std::uint32_t begin, std::uint32_t end) {
+    Node node;
+    node.begin = begin;
+    node.end = end;
+    node.lo = node.hi = tris[order_[begin]][0];
+    gp_XYZ clo = (tris[order_[begin]][0] + tris[order_[begin]][1] + tris[order_[begin]][2]) / 3, chi = clo;
+    for (std::uint32_t k = begin; k < end; ++k) {
+      const Triangle& t = tris[order_[k]];
+      for (const gp_XYZ& v : t) {
+        node.lo.SetCoord(std::min(node.lo.X(), v.X()), std::min(node.lo.Y(), v.Y()), std::min(node.lo.Z(), v.Z()));
+        node.hi.SetCoord(std::max(node.hi.X(), v.X()), std::max(node.hi.Y(), v.Y()), std::max(node.hi.Z(), v.Z()));
+      }
+      const gp_XYZ c = (t[0] + t[1] + t[2]) / 3;
+      clo.SetCoord(std::min(clo.X(), c.X()), std::min(clo.Y(), c.Y()), std::min(clo.Z(), c.Z()));
+      chi.SetCoord(std::max(chi.X(), c.X()), std::max(chi.Y(), c.Y()), std::max(chi.Z(), c.Z()));
+    }
+    nodes_[id] = node;
+    if (end - begin <= 4) return;
+    const gp_XYZ extent = chi - clo;
+    const int axis = extent.X() >= extent.Y() && extent.X() >= extent.Z() ? 1 : (extent.Y() >= extent.Z() ? 2 : 3);
+    const std::uint32_t mid = begin + (end - begin) / 2;
+    auto key = [&](std::uint32_t t) { return tris[t][0].Coord(axis) + tris[t][1].Coord(axis) + tris[t][2].Coord(axis); };
+    std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+                     [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+    const std::uint32_t left = static_cast<std::uint32_t>(nodes_.size());
+    nodes_[id].left = left;
+    nodes_.emplace_back();
+    nodes_.emplace_back();
+    buildNode(tris, left, begin, mid);
+    buildNode(tris, left + 1, mid, end);
+  }
+  std::vector<std::uint32_t> order_;
+  std::vector<Node> nodes_;
+};
+
+}  // namespace
+
+// Everything built once per solid and never changed afterwards; shared by
+// all copies of an oracle (read-only, so safe across threads).
+struct ExactOracle::Shared {
+  TopoDS_Shape solid;  // copy of the input (so meshing never touches the caller's shape)
+  // Not split: ShapeUpgrade_ShapeDivideClosed approximates some new edges
+  // (B-splines within 1e-5 on a torus), which would no longer be exact.
+  SolidTopology topo;
+  std::vector<std::vector<int>> faceEdges, faceVertices;
+  std::vector<gp_Pnt> vertexPoint;
+  std::vector<std::vector<gp_Vec>> vertexTangents;  // unit tangents of the edges leaving each vertex
+  std::vector<Bnd_Box> edgeBox, faceBox;
+  // Per edge: +1 convex, -1 concave, 0 smooth / seam / mixed. A closest point
+  // inside a convex edge means the empty ball around p touches a wedge of
+  // material narrower than a half-space there, so p is outside (concave:
+  // inside), without looking at any normal.
+  std::vector<int> edgeSide;
+  std::vector<bool> faceMeshed;
+  std::vector<Triangle> triangles;                   // mesh
+  std::vector<int> triangleFace;                     // per triangle
+  std::vector<std::array<gp_Pnt2d, 3>> triangleUV;   // per triangle, UV of its corners on its face
+  std::vector<bool> faceHasUV;
+  std::vector<double> cumulativeArea;                // for area-uniform boundary samples
+  TriangleTree tree;
+  double deflection = 0;  // largest mesh deflection (requested or reported by BRepMesh)
+  double margin = 0;      // assumed bound on |exact − mesh| distance to one face
+  double diagonal = 0;
+  gp_Pnt boxMin, boxMax;
+  bool inwardFaces = false;  // faces oriented inside-out (negative volume)
+};
+
+struct FaceSolver {
+  BRepAdaptor_Surface surface;
+  Extrema_ExtPS extrema;
+  Extrema_GenLocateExtPS locate;  // holds a reference to `surface`
+  BRepTopAdaptor_FClass2d uvClassifier;
+  bool hasSeam = false;
+  explicit FaceSolver(const TopoDS_Face& face)
+      : surface(face, true), locate(surface), uvClassifier(face, Precision::PConfusion()) {
+    for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More() && !hasSeam; ex.Next())
+      hasSeam = BRep_Tool::IsClosed(TopoDS::Edge(ex.Current()), face);
+    extrema.Initialize(surface, surface.FirstUParameter(), surface.LastUParameter(), surface.FirstVParameter(),
+                       surface.LastVParameter(), Precision::PConfusion(), Precision::PConfusion());
+  }
+  TopAbs_State state(double u, double v) const { return uvClassifier.Perform(gp_Pnt2d(u, v)); }
+  // p − S(u, v) is normal to the surface: a true extremum, not a point where
+  // a Newton run stopped at the UV bounds.
+  bool critical(const gp_Pnt& p, double u, double v) const {
+    gp_Pnt q;
+    gp_Vec su, sv;
+    surface.D1(u, v, q, su, sv);
+    const gp_Vec r(q, p);
+    const double tol = 1e-7 * r.Magnitude();
+    return std::abs(r.Dot(su)) <= tol * su.Magnitude() && std::abs(r.Dot(sv)) <= tol * sv.Magnitude();
+  }
+  // A point where the surface is smooth: inside the face, or on one of its
+  // seams (ON, but IN a small step away in all four UV directions).
+  bool smoothPoint(TopAbs_State s, double u, double v) const {
+    if (s == TopAbs_IN) return true;
+    if (s != TopAbs_ON || !hasSeam) return false;
+    const double du = 1e-7 * (surface.LastUParameter() - surface.FirstUParameter());
+    const double dv = 1e-7 * (surface.LastVParameter() - surface.FirstVParameter());
+    return state(u + du, v) == TopAbs_IN && state(u - du, v) == TopAbs_IN && state(u, v + dv) == TopAbs_IN &&
+           state(u, v - dv) == TopAbs_IN;
+  }
+};
+
+struct EdgeSolver {
+  BRepAdaptor_Curve curve;
+  Extrema_ExtPC extrema;
+  explicit EdgeSolver(const TopoDS_Edge& edge) : curve(edge) {
+    extrema.Initialize(curve, curve.FirstParameter(), curve.LastParameter());
+  }
+};
+
+// Solver objects and scratch buffers of one oracle copy.
+struct ExactOracle::Workspace {
+  std::vector<std::unique_ptr<FaceSolver>> faces;
+  std::vector<std::unique_ptr<EdgeSolver>> edges;
+  std::unique_ptr<BRepClass3d_SolidClassifier> classifier;
+  // Per-query marks (a stamp instead of clearing arrays every query).
+  std::uint32_t stamp = 0;
+  std::vector<std::uint32_t> faceStamp, edgeStamp, vertexStamp;
+  std::vector<double> faceMeshDistance;
+  std::vector<gp_Pnt2d> faceMeshUV;
+  std::vector<std::pair<double, std::uint32_t>> stack;  // tree traversal
+  std::vector<std::pair<double, std::uint32_t>> band;   // (mesh distance, triangle) near the best, for nearPoints
+  std::vector<std::pair<double, int>> candidates;  // (lower bound of exact distance, face)
+  // The last query's closest point when the surface is smooth there (inside
+  // a face or on a seam): its outward normal then decides inside/outside
+  // without the classifier.
+  int bestFace = -1;
+  double bestU = 0, bestV = 0;
+  // ... or when it is inside a sharp edge: +1 convex (p is outside), -1 concave (inside), 0 unknown.
+  int bestEdgeSide = 0;
+};
+
+ExactOracle::ExactOracle(const TopoDS_Shape& solid, const ExactOracleParams& params) {
+  auto shared = std::make_shared<Shared>();
+  Shared& s = *shared;
+  s.solid = BRepBuilderAPI_Copy(solid, false, false).Shape();
+  s.topo = buildSolidTopology(s.solid, false);
+  const SolidTopology& topo = s.topo;
+
+  Bnd_Box box;
+  BRepBndLib::AddOptimal(s.solid, box, false, false);
+  if (box.IsVoid()) throw std::runtime_error("exact oracle: the solid has no geometry");
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  s.boxMin = gp_Pnt(x0, y0, z0);
+  s.boxMax = gp_Pnt(x1, y1, z1);
+  s.diagonal = s.boxMin.Distance(s.boxMax);
+
+  GProp_GProps volume;
+  BRepGProp::VolumeProperties(s.solid, volume);
+  s.inwardFaces = volume.Mass() < 0;
+
+  const int nf = topo.faceCount(), ne = topo.edgeCount(), nv = topo.vertexCount();
+  s.faceEdges.resize(nf);
+  s.faceVertices.resize(nf);
+  for (int e = 0; e < ne; ++e) {
+    if (topo.edgeDegenerate[e]) continue;
+    for (int f : topo.edgeFaces[e])
+      if (f >= 0) s.faceEdges[f].push_back(e);
+  }
+  for (int f = 0; f < nf; ++f) {
+    for (TopExp_Explorer ex(topo.face(f), TopAbs_VERTEX); ex.More(); ex.Next()) {
+      const int v = topo.vertices.FindIndex(ex.Current()) - 1;
+      if (v >= 0 && std::find(s.faceVertices[f].begin(), s.faceVertices[f].end(), v) == s.faceVertices[f].end())
+        s.faceVertices[f].push_back(v);
+    }
+  }
+  for (int v = 0; v < nv; ++v) s.vertexPoint.push_back(BRep_Tool::Pnt(TopoDS::Vertex(topo.vertices(v + 1))));
+  s.vertexTangents.resize(nv);
+  for (int e = 0; e < ne; ++e) {
+    if (topo.edgeDegenerate[e]) continue;
+    BRepAdaptor_Curve curve(topo.edge(e));
+    for (int end = 0; end < 2; ++end) {
+      const int v = topo.edgeVertices[e][end];
+      if (v < 0) continue;
+      gp_Pnt q;
+      gp_Vec d;
+      curve.D1(end == 0 ? curve.FirstParameter() : curve.LastParameter(), q, d);
+      if (d.Magnitude() < 1e-300) continue;
+      s.vertexTangents[v].push_back(end == 0 ? d.Normalized() : -d.Normalized());
+    }
+  }
+  // Exact (conservative) boxes from the curves, slightly enlarged: used to
+  // skip edges and unmeshed faces that cannot beat the current best.
+  const double pad = 1e-7 * s.diagonal;
+  s.edgeBox.resize(ne);
+  for (int e = 0; e < ne; ++e) {
+    if (topo.edgeDegenerate[e]) continue;
+    BRepBndLib::Add(topo.edge(e), s.edgeBox[e], false);
+    s.edgeBox[e].Enlarge(pad);
+  }
+  s.faceBox.resize(nf);
+  for (int f = 0; f < nf; ++f) {
+    BRepBndLib::Add(topo.face(f), s.faceBox[f], false);
+    s.faceBox[f].Enlarge(pad);
+  }
+
+  const std::vector<EdgeFeature> features = classifyEdges(topo, 1.0);
+  s.edgeSide.assign(ne, 0);
+  for (int e = 0; e < ne; ++e) {
+    const EdgeFeature& f = features[e];
+    if (f.seam || f.free || f.mixedSign || topo.edgeDegenerate[e]) continue;
+    s.edgeSide[e] = f.kind == EdgeKind::Convex ? 1 : f.kind == EdgeKind::Concave ? -1 : 0;
+  }
+
+  const double deflection = params.meshDeflectionFraction * s.diagonal;
+  BRepMesh_IncrementalMesh mesher(topo.solid, deflection, false, params.meshAngle, true);
+  s.deflection = deflection;
+  s.faceMeshed.assign(nf, false);
+  s.faceHasUV.assign(nf, false);
+  double area = 0;
+  for (int f = 0; f < nf; ++f) {
+    TopLoc_Location loc;
+    const Handle(Poly_Triangulation) tri = BRep_Tool::Triangulation(topo.face(f), loc);
+    if (tri.IsNull() || tri->NbTriangles() == 0) continue;
+    s.faceMeshed[f] = true;
+    s.faceHasUV[f] = tri->HasUVNodes();
+    s.deflection = std::max(s.deflection, tri->Deflection());
+    const gp_Trsf trsf = loc.Transformation();
+    for (int t = 1; t <= tri->NbTriangles(); ++t) {
+      int n[3];
+      tri->Triangle(t).Get(n[0], n[1], n[2]);
+      gp_Pnt p[3];
+      std::array<gp_Pnt2d, 3> uv;
+      for (int k = 0; k < 3; ++k) {
+        p[k] = tri->Node(n[k]).Transformed(trsf);
+        if (s.faceHasUV[f]) uv[k] = tri->UVNode(n[k]);
+      }
+      const double a = 0.5 * gp_Vec(p[0], p[1]).Crossed(gp_Vec(p[0], p[2])).Magnitude();
+      if (!(a > 0)) continue;  // degenerate: its edges belong to neighbours anyway
+      s.triangles.push_back({p[0].XYZ(), p[1].XYZ(), p[2].XYZ()});
+      s.triangleFace.push_back(f);
+      s.triangleUV.push_back(uv);
+      area += a;
+      s.cumulativeArea.push_back(area);
+    }
+  }
+  s.tree.build(s.triangles);
+  s.margin = params.candidateDeflections / 2.0 * s.deflection;
+
+  shared_ = shared;
+  work_ = std::make_unique<Workspace>();
+}
+
+ExactOracle::ExactOracle(const ExactOracle& other) : shared_(other.shared_), work_(std::make_unique<Workspace>()) {}
+
+ExactOracle::~ExactOracle() = default;
+
+double ExactOracle::diagonal() const { return shared_->diagonal; }
+gp_Pnt ExactOracle::boxMin() const { return shared_->boxMin; }
+gp_Pnt ExactOracle::boxMax() const { return shared_->boxMax; }
+double ExactOracle::meshDeflection() const { return shared_->deflection; }
+std::size_t ExactOracle::meshTriangles() const { return shared_->triangles.size(); }
+int ExactOracle::faceCount() const { return shared_->topo.faceCount(); }
+int ExactOracle::unmeshedFaces() const {
+  return static_cast<int>(std::count(shared_->faceMeshed.begin(), shared_->faceMeshed.end(), false));
+}
+const TopoDS_Shape& ExactOracle::solid() const { return shared_->solid; }
+
+bool ExactOracle::inside(const gp_Pnt& p, double onTolerance, double* distance) {
+  // Fast path: when the closest point is a smooth point of a face, p − foot is
+  // along the face normal there, and its sign is the answer (the classifier
+  // costs 10-100 times a distance query on parts with many faces).
+  const BoundaryPoint foot = closestPoint(p);
+  if (distance) *distance = foot.distance;
+  if (foot.distance <= onTolerance) return true;
+  Workspace& w = *work_;
+  if (w.bestEdgeSide != 0) return w.bestEdgeSide < 0;
+  if (w.bestFace >= 0) {
+    gp_Pnt q;
+    gp_Vec su, sv;
+    w.faces[w.bestFace]->surface.D1(w.bestU, w.bestV, q, su, sv);
+    gp_Vec n = su.Crossed(sv);
+    const bool reversed = (shared_->topo.face(w.bestFace).Orientation() == TopAbs_REVERSED) != shared_->inwardFaces;
+    if (n.Magnitude() > 1e-300) {
+      const double side = gp_Vec(foot.point, p).Dot(n.Normalized()) * (reversed ? -1 : 1);
+      if (std::abs(side) >= 0.99 * foot.distance) return side < 0;
+    }
+  }
+  if (!work_->classifier) work_->classifier = std::make_unique<BRepClass3d_SolidClassifier>(shared_->solid);
+  work_->classifier->Perform(p, onTolerance);
+  const TopAbs_State state = work_->classifier->State();
+  return state == TopAbs_IN || state == TopAbs_ON;
+}
+
+double ExactOracle::distance(const gp_Pnt& p) { return closestPoint(p).distance; }
+
+BoundaryPoint ExactOracle::closestPoint(const gp_Pnt& p) {
+  const std::vector<BoundaryPoint> r = query(p, 0, false);
+  if (r.empty()) throw std::runtime_error("exact oracle: no boundary point found");
+  return r.front();
+}
+
+std::vector<BoundaryPoint> ExactOracle::nearPoints(const gp_Pnt& p, double slack) {
+  return query(p, std::max(0.0, slack), true);
+}
+
+std::vector<BoundaryPoint> ExactOracle::query(const gp_Pnt& p, double slack, bool nearOnly) {
+  const Shared& s = *shared_;
+  Workspace& w = *work_;
+  const int nf = s.topo.faceCount();
+  if (w.faceStamp.empty()) {
+    w.faces.resize(nf);
+    w.edges.resize(s.topo.edgeCount());
+    w.faceStamp.assign(nf, 0);
+    w.edgeStamp.assign(s.topo.edgeCount(), 0);
+    w.vertexStamp.assign(s.topo.vertexCount(), 0);
+    w.faceMeshDistance.assign(nf, 0);
+    w.faceMeshUV.assign(nf, gp_Pnt2d());
+  }
+  const std::uint32_t stamp = ++w.stamp;
+  const double margin = s.margin;
+  const gp_XYZ px = p.XYZ();
+
+  // 1. Candidate faces: every meshed face with a triangle within
+  //    (best mesh distance + slack + 2 margins), with its mesh foot's UV.
+  w.candidates.clear();
+  w.band.clear();
+  if (!s.triangles.empty()) {
+    const double extra = slack + 2 * margin;
+    double meshBest = std::numeric_limits<double>::infinity();
+    s.tree.query(px, extra, w.stack, [&](std::uint32_t t) {
+      const Triangle& tri = s.triangles[t];
+      const auto bc = closestBarycentric(px, tri[0], tri[1], tri[2]);
+      const double d = (px - (tri[0] * bc[0] + tri[1] * bc[1] + tri[2] * bc[2])).Modulus();
+      meshBest = std::min(meshBest, d);
+      if (nearOnly && d <= meshBest + slack + margin) w.band.emplace_back(d, t);
+      const int f = s.triangleFace[t];
+      if (w.faceStamp[f] != stamp || d < w.faceMeshDistance[f]) {
+        if (w.faceStamp[f] != stamp) w.candidates.emplace_back(0, f);
+        w.faceStamp[f] = stamp;
+        w.faceMeshDistance[f] = d;
+        const auto& uv = s.triangleUV[t];
+        w.faceMeshUV[f] = gp_Pnt2d(uv[0].XY() * bc[0] + uv[1].XY() * bc[1] + uv[2].XY() * bc[2]);
+      }
+      return d;
+    });
+    // Faces seen early in the traversal may be farther than the final radius.
+    w.candidates.erase(std::remove_if(w.candidates.begin(), w.candidates.end(),
+                                      [&](const auto& c) { return w.faceMeshDistance[c.second] > meshBest + extra; }),
+                       w.candidates.end());
+    for (auto& c : w.candidates) c.first = w.faceMeshDistance[c.second] - margin;
+  }
+  for (int f = 0; f < nf; ++f)
+    if (!s.faceMeshed[f]) w.candidates.emplace_back(boxDistance(s.faceBox[f], p), f);
+  std::sort(w.candidates.begin(), w.candidates.end());
+
+  // 2. Exact minima on the candidates, nearest first, until no face can
+  //    come within best + slack.
+  std::vector<BoundaryPoint> found;
+  double best = std::numeric_limits<double>::infinity();
+  w.bestFace = -1;
+  w.bestEdgeSide = 0;
+  // `interior`: a face point where the surface is smooth (see FaceSolver::smoothPoint).
+  // For nearPoints, edge and vertex points count only where the distance to
+  // the boundary has a local minimum, i.e. does not decrease into any
+  // incident face (edge) or along any incident edge (vertex; to first order,
+  // the faces between those edges are covered when their angles are below
+  // 180°). Otherwise a seam or an edge crossing the region around one
+  // contact would look like a second contact.
+  auto edgePointIsLocalMinimum = [&](int e, double t, const gp_Pnt& b) {
+    const gp_Vec toP(b, p);
+    const double eps = 1e-9 * toP.Magnitude();
+    for (int f : s.topo.edgeFaces[e]) {
+      if (f < 0) continue;
+      const EdgeFaceFrame frame = edgeFaceFrame(s.topo.edge(e), s.topo.face(f), t);
+      if (!frame.valid) continue;
+      const double into = toP.Dot(frame.intoFace);
+      if (into > eps) return false;
+      if (BRep_Tool::IsClosed(s.topo.edge(e), s.topo.face(f)) && -into > eps) return false;  // seam: both sides
+    }
+    return true;
+  };
+  auto vertexIsLocalMinimum = [&](int vtx) {
+    const gp_Vec toP(s.vertexPoint[vtx], p);
+    for (const gp_Vec& tangent : s.vertexTangents[vtx])
+      if (toP.Dot(tangent) > 1e-9 * toP.Magnitude()) return false;
+    return true;
+  };
+  // edgeSide: of an edge point strictly inside the edge's parameter range.
+  auto add = [&](const gp_Pnt& q, int face, int edge, int vertex, bool interior = false, double u = 0, double v = 0,
+                 int edgeSide = 0) {
+    const double d = p.Distance(q);
+    if (d <= best + slack) found.push_back({q, d, face, edge, vertex});
+    if (d < best) {
+      best = d;
+      w.bestFace = interior ? face : -1;
+      w.bestU = u;
+      w.bestV = v;
+      w.bestEdgeSide = edgeSide;
+    }
+  };
+  for (const auto& [lowerBound, f] : w.candidates) {
+    if (lowerBound > best + slack) break;
+    if (!w.faces[f]) w.faces[f] = std::make_unique<FaceSolver>(s.topo.face(f));
+    FaceSolver& fs = *w.faces[f];
+    double u, v;
+    fs.extrema.Perform(p);
+    if (fs.extrema.IsDone()) {
+      for (int n = 1; n <= fs.extrema.NbExt(); ++n) {
+        fs.extrema.Point(n).Parameter(u, v);
+        const TopAbs_State state = fs.state(u, v);
+        if (state != TopAbs_OUT) add(fs.extrema.Point(n).Value(), f, -1, -1, fs.smoothPoint(state, u, v), u, v);
+      }
+    }
+    if (s.faceMeshed[f] && s.faceHasUV[f]) {
+      fs.locate.Perform(p, w.faceMeshUV[f].X(), w.faceMeshUV[f].Y(), true);
+      if (fs.locate.IsDone()) {
+        fs.locate.Point().Parameter(u, v);
+        const TopAbs_State state = fs.state(u, v);
+        if (state != TopAbs_OUT && (!nearOnly || fs.critical(p, u, v)))
+          add(fs.locate.Point().Value(), f, -1, -1, fs.smoothPoint(state, u, v), u, v);
+      }
+    }
+    for (int e : s.faceEdges[f]) {
+      if (w.edgeStamp[e] == stamp) continue;
+      w.edgeStamp[e] = stamp;
+      if (boxDistance(s.edgeBox[e], p) > best + slack) continue;
+      if (!w.edges[e]) w.edges[e] = std::make_unique<EdgeSolver>(s.topo.edge(e));
+      Extrema_ExtPC& ext = w.edges[e]->extrema;
+      const BRepAdaptor_Curve& curve = w.edges[e]->curve;
+      ext.Perform(p);
+      if (!ext.IsDone()) continue;  // e.g. p on a circle's axis: its vertices give the distance
+      const double t0 = curve.FirstParameter(), t1 = curve.LastParameter();
+      for (int n = 1; n <= ext.NbExt(); ++n) {
+        if (!ext.IsMin(n)) continue;
+        const double t = ext.Point(n).Parameter();
+        const bool inner = t > t0 + 1e-9 * (t1 - t0) && t < t1 - 1e-9 * (t1 - t0);
+        if (nearOnly && !edgePointIsLocalMinimum(e, t, ext.Point(n).Value())) continue;
+        add(ext.Point(n).Value(), -1, e, -1, false, 0, 0, inner ? s.edgeSide[e] : 0);
+      }
+    }
+    for (int vtx : s.faceVertices[f]) {
+      if (w.vertexStamp[vtx] == stamp) continue;
+      w.vertexStamp[vtx] = stamp;
+      if (nearOnly && !vertexIsLocalMinimum(vtx)) continue;
+      add(s.vertexPoint[vtx], -1, -1, vtx);
+    }
+  }
+
+  const double limit = best + slack;
+  if (nearOnly) {
+    // A minimum can be degenerate: from a point on a torus' core circle the
+    // distance is minimal along a whole tube circle, and the solvers above
+    // return one point of it. Newton runs on the normal-projection equations
+    // (still solvable where the distance Hessian is singular), started under
+    // up to kBandStarts mesh triangles spread over those within the limit,
+    // find other points of it; on a plane they all return the same foot.
+    constexpr std::size_t kBandStarts = 16;
+    w.band.erase(std::remove_if(w.band.begin(), w.band.end(),
+                                [&](const auto& b) { return b.first > limit + margin; }),
+                 w.band.end());
+    const std::size_t step = std::max<std::size_t>(1, w.band.size() / kBandStarts);
+    for (std::size_t i = 0; i < w.band.size(); i += step) {
+      const std::uint32_t t = w.band[i].second;
+      const int f = s.triangleFace[t];
+      if (!s.faceHasUV[f]) continue;
+      const Triangle& tri = s.triangles[t];
+      const auto bc = closestBarycentric(px, tri[0], tri[1], tri[2]);
+      const auto& uv = s.triangleUV[t];
+      const gp_XY start = uv[0].XY() * bc[0] + uv[1].XY() * bc[1] + uv[2].XY() * bc[2];
+      if (!w.faces[f]) w.faces[f] = std::make_unique<FaceSolver>(s.topo.face(f));
+      FaceSolver& fs = *w.faces[f];
+      fs.locate.Perform(p, start.X(), start.Y(), false);
+      if (!fs.locate.IsDone()) continue;
+      double u, v;
+      fs.locate.Point().Parameter(u, v);
+      const double d = std::sqrt(fs.locate.SquareDistance());
+      if (d <= limit && fs.state(u, v) != TopAbs_OUT && fs.critical(p, u, v))
+        found.push_back({fs.locate.Point().Value(), d, f, -1, -1});
+    }
+  }
+  found.erase(std::remove_if(found.begin(), found.end(), [&](const BoundaryPoint& b) { return b.distance > limit; }),
+              found.end());
+  std::sort(found.begin(), found.end(),
+            [](const BoundaryPoint& a, const BoundaryPoint& b) { return a.distance < b.distance; });
+  if (!nearOnly && found.size() > 1) found.resize(1);
+  return found;
+}
+
+std::vector<gp_Pnt> ExactOracle::sampleBoundary(std::size_t count, unsigned seed) const {
+  const Shared& s = *shared_;
+  std::vector<gp_Pnt> out;
+  if (s.cumulativeArea.empty() || count == 0) return out;
+  // Own uniform mapping (not std::uniform_real_distribution) so the points
+  // are the same with every standard library.
+  std::mt19937_64 rng(seed);
+  auto uniform = [&] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+  std::vector<std::unique_ptr<BRepAdaptor_Surface>> surfaces(s.topo.faceCount());
+  const double total = s.cumulativeArea.back();
+  out.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double pick = uniform() * total;
+    std::size_t t = std::upper_bound(s.cumulativeArea.begin(), s.cumulativeArea.end(), pick) - s.cumulativeArea.begin();
+    t = std::min(t, s.triangles.size() - 1);
+    double a = uniform(), b = uniform();
+    if (a + b > 1) a = 1 - a, b = 1 - b;
+    const double c = 1 - a - b;
+    const int f = s.triangleFace[t];
+    if (s.faceHasUV[f]) {
+      if (!surfaces[f]) surfaces[f] = std::make_unique<BRepAdaptor_Surface>(s.topo.face(f), true);
+      const auto& uv = s.triangleUV[t];
+      const gp_XY q = uv[0].XY() * c + uv[1].XY() * a + uv[2].XY() * b;
+      out.push_back(surfaces[f]->Value(q.X(), q.Y()));
+    } else {
+      const Triangle& tri = s.triangles[t];
+      out.emplace_back(tri[0] * c + tri[1] * a + tri[2] * b);
+    }
+  }
+  return out;
+}
+
+}  // namespace cadmedial

@@ -1,0 +1,95 @@
+// `cadmedial eval` (runEvalCommand): the documented error on a missing
+// medial.ply, and eval.json for the exact box axis.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "box_axis.hpp"
+#include "cadmedial/errors.hpp"
+#include "eval_command.hpp"
+#include "medial_ply_io.hpp"
+
+namespace cadmedial {
+namespace {
+
+std::string freshDir(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + "/eval_command_" + name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+TEST(EvalCommand, MissingMedialPlyIsAOneLineInputError) {
+  EvalCommandOptions options;
+  options.model = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";
+  options.outDir = freshDir("missing");
+  options.quiet = true;
+  try {
+    runEvalCommand(options);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(e.code(), kExitUnreadableInput);
+    EXPECT_NE(message.find("missing " + options.outDir + "/solid_0/medial.ply"), std::string::npos) << message;
+    EXPECT_NE(message.find("cadmedial run"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos);
+  }
+  EXPECT_FALSE(std::filesystem::exists(options.outDir + "/solid_0/eval.json"));
+}
+
+TEST(EvalCommand, MalformedMedialPlyNamesTheFile) {
+  EvalCommandOptions options;
+  options.model = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";
+  options.outDir = freshDir("malformed");
+  options.quiet = true;
+  std::filesystem::create_directories(options.outDir + "/solid_0");
+  std::ofstream(options.outDir + "/solid_0/medial.ply") << "ply\nformat ascii 1.0\nelement vertex 1\n";
+  try {
+    runEvalCommand(options);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.code(), kExitUnreadableInput);
+    EXPECT_NE(std::string(e.what()).find("solid_0/medial.ply: line 4"), std::string::npos) << e.what();
+  }
+}
+
+TEST(EvalCommand, ExactBoxAxisWritesPassingEvalJson) {
+  EvalCommandOptions options;
+  options.model = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";
+  options.outDir = freshDir("box");
+  options.strict = true;
+  std::filesystem::create_directories(options.outDir + "/solid_0");
+  writeMedialPlyFile(options.outDir + "/solid_0/medial.ply", test::exactBoxAxis(20));
+  EXPECT_EQ(runEvalCommand(options), kExitOk);
+  std::ifstream in(options.outDir + "/solid_0/eval.json");
+  ASSERT_TRUE(in);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_TRUE(j.at("pass").at("all").get<bool>()) << j.dump(2);
+  EXPECT_EQ(j.at("solid"), 0);
+  EXPECT_EQ(j.at("topology").at("medial").at("beta1"), 0);
+  EXPECT_DOUBLE_EQ(j.at("coverage").at("share").get<double>(), 1.0);
+
+  // With --strict, a failing axis gives exit code 1.
+  writeMedialPlyFile(options.outDir + "/solid_0/medial.ply", test::scaledRadii(test::exactBoxAxis(20), 0.9));
+  options.quiet = true;
+  EXPECT_EQ(runEvalCommand(options), kExitProcessingFailed);
+}
+
+TEST(EvalCommand, BadToleranceIsAUsageError) {
+  EvalCommandOptions options;
+  options.model = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";
+  options.outDir = freshDir("tolerance");
+  options.tolerance = 0;
+  try {
+    runEvalCommand(options);
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.code(), kExitUsage);
+  }
+}
+
+}  // namespace
+}  // namespace cadmedial

@@ -1,0 +1,218 @@
+// ExactOracle against OCCT's own reference (BRepExtrema_DistShapeShape) on
+// random points, against hand-known distances at degenerate points, and its
+// speed (printed, so the README numbers can be rerun).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS_Compound.hxx>
+
+#include "cadmedial/brep_io.hpp"
+#include "cadmedial/exact_oracle.hpp"
+
+namespace cadmedial {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string modelPath(const std::string& file) { return std::string(CADMEDIAL_MODELS_DIR) + "/" + file; }
+
+// The faces as a compound: DistShapeShape then measures the distance to the
+// boundary even for points inside (with a solid it may report 0 there).
+TopoDS_Shape facesOf(const TopoDS_Shape& solid) {
+  BRep_Builder builder;
+  TopoDS_Compound compound;
+  builder.MakeCompound(compound);
+  for (TopExp_Explorer ex(solid, TopAbs_FACE); ex.More(); ex.Next()) builder.Add(compound, ex.Current());
+  return compound;
+}
+
+double referenceDistance(const TopoDS_Shape& faces, const gp_Pnt& p) {
+  BRepExtrema_DistShapeShape dss(BRepBuilderAPI_MakeVertex(p).Vertex(), faces);
+  EXPECT_TRUE(dss.IsDone());
+  return dss.Value();
+}
+
+// Uniform points in the bounding box grown by 20 % on every side.
+std::vector<gp_Pnt> randomPoints(const ExactOracle& oracle, int count, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(-0.2, 1.2);
+  const gp_Pnt lo = oracle.boxMin(), hi = oracle.boxMax();
+  std::vector<gp_Pnt> points;
+  for (int i = 0; i < count; ++i)
+    points.emplace_back(lo.X() + unit(rng) * (hi.X() - lo.X()), lo.Y() + unit(rng) * (hi.Y() - lo.Y()),
+                        lo.Z() + unit(rng) * (hi.Z() - lo.Z()));
+  return points;
+}
+
+// Distance to 1e-7 x diagonal, and the inside test equal to
+// BRepClass3d_SolidClassifier's (away from the boundary, where both may differ
+// by their tolerances).
+void expectAgreesWithOcct(const TopoDS_Shape& solid, const std::string& label, int count) {
+  ExactOracle oracle(solid);
+  const TopoDS_Shape faces = facesOf(solid);
+  BRepClass3d_SolidClassifier classifier(solid);
+  const double tol = 1e-7 * oracle.diagonal();
+  double worst = 0;
+  for (const gp_Pnt& p : randomPoints(oracle, count, 7)) {
+    const double ref = referenceDistance(faces, p);
+    const BoundaryPoint closest = oracle.closestPoint(p);
+    EXPECT_NEAR(closest.distance, ref, tol) << label << " at " << p.X() << " " << p.Y() << " " << p.Z();
+    EXPECT_NEAR(p.Distance(closest.point), closest.distance, 1e-12 * oracle.diagonal());
+    worst = std::max(worst, std::abs(closest.distance - ref));
+    if (ref > 1e-6 * oracle.diagonal()) {
+      classifier.Perform(p, 1e-9 * oracle.diagonal());
+      EXPECT_EQ(oracle.inside(p, 1e-9 * oracle.diagonal()), classifier.State() != TopAbs_OUT)
+          << label << " at " << p.X() << " " << p.Y() << " " << p.Z();
+    }
+  }
+  std::printf("%s: %d points, max |oracle - DistShapeShape| = %.3g (%.3g x diagonal)\n", label.c_str(), count, worst,
+              worst / oracle.diagonal());
+}
+
+void expectAgreesWithDistShapeShape(const std::string& path, int count) {
+  const LoadedModel model = loadModel(path);
+  ASSERT_EQ(model.solids.size(), 1u);
+  expectAgreesWithOcct(model.solids[0], std::filesystem::path(path).filename().string(), count);
+}
+
+TEST(ExactOracle, AgreesWithDistShapeShapeOnBox) { expectAgreesWithDistShapeShape(modelPath("box.step"), 300); }
+TEST(ExactOracle, AgreesWithDistShapeShapeOnCylinder) {
+  expectAgreesWithDistShapeShape(modelPath("cylinder.step"), 300);
+}
+TEST(ExactOracle, AgreesWithDistShapeShapeOnTorus) { expectAgreesWithDistShapeShape(modelPath("torus.step"), 300); }
+TEST(ExactOracle, AgreesWithDistShapeShapeOnFlange) { expectAgreesWithDistShapeShape(modelPath("flange.step"), 150); }
+TEST(ExactOracle, AgreesWithDistShapeShapeOnFilletChamferBlock) {
+  expectAgreesWithDistShapeShape(modelPath("fillet_chamfer_block.step"), 150);
+}
+
+// Every closed solid of the public models (first two per file), when present.
+TEST(ExactOracle, AgreesWithDistShapeShapeOnPublicModels) {
+  const std::string dir = CADMEDIAL_PUBLIC_MODELS_DIR;
+  if (!std::filesystem::exists(dir + "/MANIFEST.tsv")) GTEST_SKIP() << "public models not present";
+  int solids = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string ext = entry.path().extension().string();
+    if (ext == ".tsv" || ext == ".md") continue;
+    LoadedModel model;
+    try {
+      model = loadModel(entry.path().string());
+    } catch (const std::exception&) {
+      continue;  // files without a closed solid are the sampling tests' business
+    }
+    for (std::size_t i = 0; i < model.solids.size() && i < 2; ++i, ++solids)
+      expectAgreesWithOcct(model.solids[i], entry.path().filename().string() + " solid " + std::to_string(i), 40);
+  }
+  EXPECT_GT(solids, 10);
+}
+
+// Points where every boundary point of a face is equally far (analytic
+// solvers give up there); the answer is known by hand (models/EXPECTED.md).
+TEST(ExactOracle, DegeneratePointsHaveHandDistances) {
+  {
+    ExactOracle box(loadModel(modelPath("box.step")).solids[0]);  // [0,40]x[0,30]x[0,20]
+    EXPECT_NEAR(box.distance(gp_Pnt(20, 15, 10)), 10, 1e-12);
+    EXPECT_NEAR(box.distance(gp_Pnt(5, 5, 5)), 5, 1e-12);
+    EXPECT_NEAR(box.distance(gp_Pnt(-3, -4, 10)), 5, 1e-12);  // closest to the vertical edge x = y = 0
+  }
+  {
+    ExactOracle cyl(loadModel(modelPath("cylinder.step")).solids[0]);  // R 10, z 0..30, axis z
+    EXPECT_NEAR(cyl.distance(gp_Pnt(0, 0, 15)), 10, 1e-9);
+    EXPECT_NEAR(cyl.distance(gp_Pnt(0, 0, 5)), 5, 1e-9);
+    EXPECT_NEAR(cyl.distance(gp_Pnt(0, 0, 40)), 10, 1e-9);
+  }
+  {
+    ExactOracle torus(loadModel(modelPath("torus.step")).solids[0]);  // R 30, r 10, axis z
+    for (double a : {0.0, 0.3, 1.0, 2.5, 4.0}) {
+      const gp_Pnt core(30 * std::cos(a), 30 * std::sin(a), 0);
+      EXPECT_NEAR(torus.distance(core), 10, 1e-9) << "core circle at angle " << a;
+      const std::vector<BoundaryPoint> near = torus.nearPoints(core, 1e-6);
+      ASSERT_FALSE(near.empty());
+      EXPECT_NEAR(near.front().distance, 10, 1e-9);
+    }
+    EXPECT_NEAR(torus.distance(gp_Pnt(0, 0, 0)), 20, 1e-9);  // centre: the inner equator
+  }
+}
+
+double largestAngleDeg(const gp_Pnt& v, const std::vector<BoundaryPoint>& near) {
+  double best = 0;
+  for (const BoundaryPoint& a : near)
+    for (const BoundaryPoint& b : near) best = std::max(best, gp_Vec(v, a.point).Angle(gp_Vec(v, b.point)));
+  return best * 180 / kPi;
+}
+
+// nearPoints finds both sides of a medial ball, also where the contact is a
+// whole circle of one face, and only one side off the axis.
+TEST(ExactOracle, NearPointsSeeEveryContactOfAMedialBall) {
+  ExactOracle torus(loadModel(modelPath("torus.step")).solids[0]);
+  for (double a : {0.0, 0.3, 1.0, 2.5, 4.0}) {
+    const gp_Pnt core(30 * std::cos(a), 30 * std::sin(a), 0);
+    const std::vector<BoundaryPoint> near = torus.nearPoints(core, 1e-6);
+    for (const BoundaryPoint& b : near) EXPECT_NEAR(b.distance, 10, 1e-6);
+    EXPECT_GT(largestAngleDeg(core, near), 90) << "core circle at angle " << a;
+  }
+  const gp_Pnt offCore(33, 0, 1);  // 3.2 from the core: one contact, even with slack 1
+  EXPECT_LT(largestAngleDeg(offCore, torus.nearPoints(offCore, 1.0)), 10);
+
+  ExactOracle box(loadModel(modelPath("box.step")).solids[0]);
+  EXPECT_NEAR(largestAngleDeg(gp_Pnt(20, 15, 10), box.nearPoints(gp_Pnt(20, 15, 10), 1e-9)), 180, 1e-6);
+  EXPECT_NEAR(largestAngleDeg(gp_Pnt(20, 4, 4), box.nearPoints(gp_Pnt(20, 4, 4), 1e-9)), 90, 1e-6);
+  EXPECT_LT(largestAngleDeg(gp_Pnt(20, 15, 3), box.nearPoints(gp_Pnt(20, 15, 3), 1.0)), 1e-6);
+
+  ExactOracle cylinder(loadModel(modelPath("cylinder.step")).solids[0]);
+  EXPECT_GT(largestAngleDeg(gp_Pnt(0, 0, 15), cylinder.nearPoints(gp_Pnt(0, 0, 15), 1e-6)), 90);
+}
+
+// Queries per second of distance() and inside() on random points of the
+// bounding box (single thread). Printed; the README quotes these.
+void measureSpeed(const std::string& path, int count) {
+  const LoadedModel model = loadModel(path);
+  ASSERT_FALSE(model.solids.empty());
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
+  ExactOracle oracle(model.solids[0]);
+  const auto t1 = Clock::now();
+  const std::vector<gp_Pnt> points = randomPoints(oracle, count, 11);
+  double sum = 0;
+  for (const gp_Pnt& p : points) sum += oracle.distance(p);
+  const auto t2 = Clock::now();
+  int in = 0;
+  for (const gp_Pnt& p : points) in += oracle.inside(p, 1e-6 * oracle.diagonal());
+  const auto t3 = Clock::now();
+  auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
+  std::printf("%s: %d faces, %zu mesh triangles, build %.2f s, distance %.0f queries/s, inside %.0f queries/s "
+              "(%d of %d inside, mean distance %.3g)\n",
+              std::filesystem::path(path).filename().c_str(), oracle.faceCount(), oracle.meshTriangles(),
+              seconds(t0, t1), count / seconds(t1, t2), count / seconds(t2, t3), in, count, sum / count);
+  // Accuracy on a few points of the same model (DistShapeShape is slow on big models).
+  const TopoDS_Shape faces = facesOf(model.solids[0]);
+  BRepClass3d_SolidClassifier classifier(model.solids[0]);
+  for (int i = 0; i < 40; ++i) {
+    const double ref = referenceDistance(faces, points[i]);
+    EXPECT_NEAR(oracle.distance(points[i]), ref, 1e-7 * oracle.diagonal());
+    classifier.Perform(points[i], 1e-6 * oracle.diagonal());
+    if (ref > 1e-5 * oracle.diagonal()) {
+      EXPECT_EQ(oracle.inside(points[i], 1e-6 * oracle.diagonal()), classifier.State() != TopAbs_OUT);
+    }
+  }
+}
+
+TEST(ExactOracleSpeed, Flange) { measureSpeed(modelPath("flange.step"), 20000); }
+
+TEST(ExactOracleSpeed, NistCtc01) {
+  const std::string path = std::string(CADMEDIAL_PUBLIC_MODELS_DIR) + "/nist_ctc_01_asme1_rd.stp";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "public models not present";
+  measureSpeed(path, 5000);
+}
+
+}  // namespace
+}  // namespace cadmedial

@@ -1,0 +1,92 @@
+"""Plain /usr/bin/python3 test of `import cadmedial` after plugin/install.sh
+(run by run_freecad_test.sh: the package is found through the .pth file the
+install put into the temporary HOME's user site-packages). No FreeCAD here."""
+
+import importlib.util
+import os
+import sys
+import threading
+import time
+import traceback
+
+failures = []
+
+
+def check(condition, what):
+    print(("ok    " if condition else "FAIL  ") + what, flush=True)
+    if not condition:
+        failures.append(what)
+
+
+def main():
+    import numpy as np
+
+    import cadmedial
+
+    source_dir = os.environ["CADMEDIAL_SOURCE_DIR"]
+    tmp = os.environ["CADMEDIAL_TEST_TMP"]
+    models = os.path.join(source_dir, "models")
+    check(os.path.realpath(cadmedial.__file__).startswith(os.path.realpath(os.environ["FREECAD_USER_HOME"])),
+          f"cadmedial found through the .pth ({cadmedial.__file__})")
+    check(importlib.util.find_spec("freecad") is None, "the install does not shadow FreeCAD's `freecad` package")
+    check("FreeCAD" not in sys.modules, "no FreeCAD needed")
+
+    (axis,) = cadmedial.compute(os.path.join(models, "l_bracket.step"))
+    check(axis.vertices.ndim == 2 and axis.vertices.shape[1] == 3 and axis.vertices.dtype == np.float64,
+          f"vertices {axis.vertices.shape}")
+    check(axis.radius.shape == (axis.vertex_count,) and (axis.radius >= 0).all(), "one radius >= 0 per vertex")
+    check(axis.offsets[0] == 0 and axis.offsets[-1] == axis.indices.size and (np.diff(axis.offsets) >= 3).all(),
+          f"{axis.polygon_count} polygons as offsets + indices")
+    check(axis.indices.min() >= 0 and axis.indices.max() < axis.vertex_count, "indices in range")
+    check(axis.sheet.shape == (axis.polygon_count,) and axis.sheet.max() + 1 == axis.sheet_count,
+          f"{axis.sheet_count} sheets")
+    check(set(np.unique(axis.provenance)) <= {0, 1, 2, 3}, "provenance codes 0..3")
+    check(axis.summary["counts"]["medial_polygons"] == axis.polygon_count, "summary dict matches the arrays")
+    check(axis.beta0 == 1, f"L-bracket: beta0 {axis.beta0}, beta1 {axis.beta1}")
+    tri, poly = axis.triangles()
+    check(tri.shape[0] == int((np.diff(axis.offsets) - 2).sum()), f"{tri.shape[0]} fan triangles")
+
+    (samples,) = cadmedial.sample(os.path.join(models, "box.step"))
+    check(samples.points.shape[1] == 3 and samples.triangles.shape[1] == 3 and samples.triplets.shape[1] == 3,
+          repr(samples))
+    check(samples.report["reconstruction"]["surface"]["closed_manifold"], "box reconstruction closed")
+    (facts,) = cadmedial.inspect(os.path.join(models, "box.step"))
+    check(abs(facts["default_spacing"] - facts["bbox_diagonal"] / 40) < 1e-9 * facts["bbox_diagonal"],
+          f"inspect: default spacing {facts['default_spacing']:.4g}")
+
+    for ext in ("ply", "obj", "ma"):
+        path = os.path.join(tmp, f"l_bracket.{ext}")
+        axis.write(path)
+        check(os.path.getsize(path) > 0, f"write .{ext}")
+    leftovers = [f for f in os.listdir(tmp) if ".tmp" in f]
+    check(not leftovers, "no temporary files left")
+
+    # The GIL is released while C++ runs: the main thread keeps going.
+    done = threading.Event()
+    box = os.path.join(models, "flange.step")
+    worker = threading.Thread(target=lambda: (cadmedial.compute(box, spacing=1.5), done.set()))
+    ticks = 0
+    start = time.perf_counter()
+    worker.start()
+    while not done.is_set() and time.perf_counter() - start < 120:
+        ticks += 1
+        time.sleep(0.001)
+    worker.join()
+    seconds = time.perf_counter() - start
+    check(done.is_set() and ticks > 0.3 * seconds / 0.0015,
+          f"main thread ran {ticks} times during a {seconds:.2f} s computation")
+
+    try:
+        cadmedial.compute(os.path.join(models, "EXPECTED.md"))
+        check(False, "bad file raises")
+    except ValueError as e:
+        check(isinstance(e, cadmedial.InputError) and "unknown extension" in str(e), f"bad file: {e}")
+
+
+try:
+    main()
+except Exception:  # noqa: BLE001
+    traceback.print_exc()
+    failures.append("exception")
+print(f"{len(failures)} failure(s)" + (": " + "; ".join(failures) if failures else ""), flush=True)
+sys.exit(1 if failures else 0)
