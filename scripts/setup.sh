@@ -38,13 +38,25 @@ build_project() {
   cmake --build "$build" -j "$jobs"
 }
 
+# The FreeCAD workbench and the `cadmedial` Python module, for this user.
+install_addon() {
+  "$repo/plugin/install.sh" --build-dir "$build"
+}
+
 install_missing_packages
 build_project
+install_addon
 
 if [ "$mode" = demo ]; then
   model="$repo/models/flange.step"
-  "$build/cli/cadmedial" sample "$model" -o "$out/flange"
-  echo "setup: done. Open $out/flange/solid_0/samples.ply and boundary.ply in MeshLab or ParaView."
+  "$build/cli/cadmedial" run "$model" -o "$out/flange"
+  "$build/cli/cadmedial" eval "$model" "$out/flange"
+  fcstd="$out/flange/flange_medial.FCStd"
+  rm -f "$fcstd"
+  CADMEDIAL_DEMO_MODEL="$model" CADMEDIAL_DEMO_FCSTD="$fcstd" freecadcmd "$repo/scripts/demo_document.py"
+  [ -f "$fcstd" ] || { echo "setup: the FreeCAD document was not written" >&2; exit 1; }
+  echo "setup: done. Outputs in $out/flange: medial.ply/.obj/.ma, summary.json, eval.json per solid, and"
+  echo "       $fcstd (open it in FreeCAD; the Medial Axis workbench is installed)."
 else
   cd "$build"
   ctest --output-on-failure -j "$jobs"
