@@ -29,6 +29,9 @@ nlohmann::json medialSummaryJson(const SamplingReport& sampling, const MedialRes
                    {"beta2", m.topology.beta2}};
   j["diagnostics"] = {{"triplets_not_delaunay", c.tripletsNotDelaunay},
                       {"triplets_on_hull", c.tripletsOnHull},
+                      {"convex_gaps_without_fill", m.forced.gapsWithoutFill},
+                      {"convex_gaps_not_delaunay", m.forced.gapsNotDelaunay},
+                      {"triplets_unattached", m.forced.tripletsUnattached},
                       {"samples_without_umbrella", c.samplesWithoutUmbrella},
                       {"degenerate_umbrella_triangles", c.degenerateUmbrellaTriangles},
                       {"walk_blocked_crossings", c.walkBlockedCrossings},

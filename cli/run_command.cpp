@@ -14,6 +14,7 @@
 #include "cadmedial/brep_io.hpp"
 #include "cadmedial/errors.hpp"
 #include "cadmedial/sampling.hpp"
+#include "medial_mesh_conversion.hpp"
 #include "medial_ply_io.hpp"
 #include "medial_summary.hpp"
 #include "medial_writers.hpp"
@@ -22,19 +23,6 @@
 namespace cadmedial {
 
 namespace {
-// The evaluation's plain mesh form of the complex (what medial.ply holds).
-MedialMesh toMedialMesh(const MedialComplex& c) {
-  MedialMesh mesh;
-  mesh.vertices = c.vertices;
-  mesh.radius = c.radius;
-  mesh.polygonOffsets = c.polygonOffsets;
-  mesh.polygonVertices = c.polygonVertices;
-  mesh.sheet.assign(c.sheet.begin(), c.sheet.end());
-  mesh.provenance.reserve(c.provenance.size());
-  for (PolygonProvenance p : c.provenance) mesh.provenance.push_back(static_cast<MedialProvenance>(p));
-  return mesh;
-}
-
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 }  // namespace

@@ -102,13 +102,30 @@ InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& 
   for (Index f = 0; f < nf; ++f) (out.facetOuter[f] ? out.outerFacets : out.innerFacets)++;
   for (Index g : refusedTargets) out.blockedCrossingsToInner += out.facetOuter[g] ? 0 : 1;
 
+  // Voronoi vertices used by inner / outer fan and corner triangles, so that
+  // fills (which hang on no facet) follow the triangles they close.
+  std::vector<std::uint8_t> cellOnInner(dv.cellCount(), 0), cellOnOuter(dv.cellCount(), 0);
   for (std::size_t i = 0; i < forced.triangles.size(); ++i) {
     const ForcedTriangle& t = forced.triangles[i];
+    if (t.kind == PolygonProvenance::ConvexEdgeFillTriangle) continue;
     const bool attachedOuter = t.attachedFacet != kNoIndex && out.facetOuter[t.attachedFacet];
+    for (Index c : t.cells)
+      if (c != kNoIndex) (attachedOuter ? cellOnOuter : cellOnInner)[c] = 1;
     if (!attachedOuter) continue;
     out.forcedOuter[i] = 1;
     if (t.kind == PolygonProvenance::CornerTriangle) ++out.outerCornerTriangles;
     else ++out.outerConvexTriangles;
+  }
+  // A fill s s' v is outer when v only lies on outer triangles: on circular
+  // rims the fans at s and s' can meet at a Voronoi vertex of the outer axis.
+  for (std::size_t i = 0; i < forced.triangles.size(); ++i) {
+    const ForcedTriangle& t = forced.triangles[i];
+    if (t.kind != PolygonProvenance::ConvexEdgeFillTriangle) continue;
+    const Index v = t.cells[0];
+    if (v != kNoIndex && cellOnOuter[v] && !cellOnInner[v]) {
+      out.forcedOuter[i] = 1;
+      ++out.outerConvexTriangles;
+    }
   }
   out.seconds = watch.seconds();
 

@@ -13,6 +13,8 @@
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
+#include <IntCurvesFace_ShapeIntersector.hxx>
+#include <gp_Lin.hxx>
 #include <TopoDS.hxx>
 
 #include "sampling_context.hpp"
@@ -20,9 +22,10 @@
 namespace cadmedial {
 
 namespace {
-constexpr double kCurvatureFraction = 0.2;  // spacing <= this × radius of curvature (chord error ~0.5 %)
+constexpr double kCurvatureFraction = 0.15;  // spacing <= this × radius of curvature (chord error ~0.3 %)
 constexpr double kCornerBallFraction = 0.3;  // corner ball <= this × shortest incident edge
-constexpr double kLegFraction = 0.6;         // triplet leg = this × min(edge spacing, corner balls)
+constexpr double kLegFraction = 0.6;
+constexpr double kThicknessFraction = 0.4;   // spacing <= this × local wall thickness         // triplet leg = this × min(edge spacing, corner balls)
 
 double faceMinCurvatureRadius(const TopoDS_Face& face) {
   BRepAdaptor_Surface surf(face, true);
@@ -38,6 +41,32 @@ double faceMinCurvatureRadius(const TopoDS_Face& face) {
       maxK = std::max({maxK, std::abs(props.MaxCurvature()), std::abs(props.MinCurvature())});
     }
   return maxK > 0 ? 1.0 / maxK : 1e300;
+}
+
+// Smallest wall thickness seen from a face: rays cast inward along the normal
+// from a grid of points on the face, to the first boundary hit. The medial
+// ball of a wall of thickness t has radius t/2, so a thin wall needs samples
+// spaced well below t for the Voronoi facets between its sides to be medial.
+double faceMinThickness(const TopoDS_Face& face, IntCurvesFace_ShapeIntersector& rays, double spacing) {
+  BRepAdaptor_Surface surf(face, true);
+  BRepTopAdaptor_FClass2d inFace(face, 1e-9);
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  double thinnest = 1e300;
+  constexpr int n = 7;
+  const double skip = 1e-6 * spacing;  // ignore the face the ray starts on
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const gp_Pnt2d uv(u0 + (u1 - u0) * (i + 0.5) / n, v0 + (v1 - v0) * (j + 0.5) / n);
+      if (inFace.Perform(uv) != TopAbs_IN) continue;
+      gp_Vec n3 = outwardNormalAt(face, uv);
+      if (n3.Magnitude() < 0.5) continue;
+      const gp_Pnt p = surf.Value(uv.X(), uv.Y());
+      rays.Perform(gp_Lin(p, gp_Dir(-n3)), skip, 1e300);
+      if (!rays.IsDone()) continue;
+      for (int k = 1; k <= rays.NbPnt(); ++k) thinnest = std::min(thinnest, rays.WParameter(k));
+    }
+  return thinnest;
 }
 
 double edgeMinCurvatureRadius(const TopoDS_Edge& edge) {
@@ -59,8 +88,13 @@ double clampSpacing(double s, const SamplingContext& ctx) { return std::clamp(s,
 void computeSpacings(SamplingContext& ctx) {
   const SolidTopology& topo = ctx.topo;
   ctx.faceSpacing.resize(topo.faceCount());
-  for (int f = 0; f < topo.faceCount(); ++f)
-    ctx.faceSpacing[f] = clampSpacing(kCurvatureFraction * faceMinCurvatureRadius(topo.face(f)), ctx);
+  IntCurvesFace_ShapeIntersector rays;
+  rays.Load(topo.solid, 1e-7);
+  for (int f = 0; f < topo.faceCount(); ++f) {
+    const double curvature = kCurvatureFraction * faceMinCurvatureRadius(topo.face(f));
+    const double thickness = kThicknessFraction * faceMinThickness(topo.face(f), rays, ctx.spacing);
+    ctx.faceSpacing[f] = clampSpacing(std::min(curvature, thickness), ctx);
+  }
 
   ctx.edgeSpacing.assign(topo.edgeCount(), ctx.spacing);
   for (int e = 0; e < topo.edgeCount(); ++e) {
@@ -141,6 +175,19 @@ void sampleVerticesAndEdges(SamplingContext& ctx, SampleBuilder& builder) {
 
     if (feat.kind == EdgeKind::Convex)
       for (Index id : info.samples) set.onConvexEdge[id] = 1;
+  }
+
+  // A vertex inside a convex edge chain (a tangent pass-through, e.g. where a
+  // split rim circle joins) is not a corner, but its interior tangent cone is
+  // a wedge: the inner axis must attach there exactly as at a non-concave
+  // corner, so core completes the axis at it the same way.
+  for (int v = 0; v < topo.vertexCount(); ++v) {
+    const VertexFeature& vf = ctx.vertexFeatures[v];
+    if (vf.isCorner || vf.sharpEdgeEnds != 2) continue;
+    bool allConvex = true;
+    for (int e : topo.vertexEdges[v])
+      if (ctx.edgeFeatures[e].kind == EdgeKind::Concave) allConvex = false;
+    if (allConvex) set.isNonConcaveCorner[ctx.vertexSample[v]] = 1;
   }
 }
 

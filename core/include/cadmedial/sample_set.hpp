@@ -70,7 +70,9 @@ struct SampleSet {
   std::vector<SampleKind> kind;      // per point
   std::vector<std::int32_t> owner;   // per point: face / edge / vertex id by kind
   std::vector<std::uint8_t> onConvexEdge;        // per point: 1 if on a convex edge (incl. its end vertices)
-  std::vector<std::uint8_t> isNonConcaveCorner;  // per point: 1 if a non-concave corner sample
+  // per point: 1 where the inner axis must attach at a vertex sample: a
+  // non-concave corner, or a vertex inside a convex edge chain (pass-through).
+  std::vector<std::uint8_t> isNonConcaveCorner;
 
   std::vector<Triplet> triplets;
 
