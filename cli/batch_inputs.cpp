@@ -4,7 +4,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
-#include <map>
+#include <numeric>
 #include <set>
 #include <system_error>
 
@@ -49,22 +49,41 @@ class InputCollector {
     addFile(absolute(argument), fs::current_path());
   }
 
+  // Drops repeats of a file (the first one stays) and rejects two files with
+  // one output folder. Sorting indices rather than keeping sets of names: no
+  // second copy of a million paths.
   std::vector<BatchInput> take() {
     if (inputs_.empty()) throw InputError(kExitUsage, "no input files found (looked for .step .stp .iges .igs .brep)");
-    return std::move(inputs_);
+    std::vector<std::size_t> order(inputs_.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::vector<bool> repeated(inputs_.size(), false);
+    const auto byField = [&](std::string BatchInput::*field) {
+      std::stable_sort(order.begin(), order.end(),
+                       [&](std::size_t a, std::size_t b) { return inputs_[a].*field < inputs_[b].*field; });
+    };
+    byField(&BatchInput::path);
+    for (std::size_t k = 1; k < order.size(); ++k)
+      if (inputs_[order[k]].path == inputs_[order[k - 1]].path) repeated[order[k]] = true;
+    order.erase(std::remove_if(order.begin(), order.end(), [&](std::size_t i) { return repeated[i]; }), order.end());
+    byField(&BatchInput::output);
+    for (std::size_t k = 1; k < order.size(); ++k) {
+      const BatchInput &a = inputs_[order[k - 1]], &b = inputs_[order[k]];
+      if (a.output == b.output)
+        throw InputError(kExitUsage, "two inputs would share the output folder '" + a.output + "': " + a.path +
+                                         " and " + b.path + " (list them from a common folder or manifest)");
+    }
+    std::vector<BatchInput> unique;
+    unique.reserve(order.size());
+    for (std::size_t i = 0; i < inputs_.size(); ++i)
+      if (!repeated[i]) unique.push_back(std::move(inputs_[i]));
+    return unique;
   }
 
  private:
   static fs::path absolute(const fs::path& p) { return fs::absolute(p).lexically_normal(); }
 
   void addFile(const fs::path& path, const fs::path& base) {
-    if (!seenPaths_.insert(path.string()).second) return;
-    BatchInput input{path.string(), outputFolder(path, base)};
-    const auto [it, inserted] = pathOfOutput_.emplace(input.output, input.path);
-    if (!inserted)
-      throw InputError(kExitUsage, "two inputs would share the output folder '" + input.output + "': " + it->second +
-                                       " and " + input.path + " (list them from a common folder or manifest)");
-    inputs_.push_back(std::move(input));
+    inputs_.push_back({path.string(), outputFolder(path, base)});
   }
 
   void addFolder(const fs::path& folder) {
@@ -78,10 +97,10 @@ class InputCollector {
       std::error_code ignored;
       // Hidden entries (.git, our own .batch-tmp) and the output folder itself
       // (`batch . -o out`) are never inputs.
-      const bool skipped = name.empty() || name[0] == '.' || (!skip_.empty() && fs::equivalent(it->path(), skip_, ignored));
+      const bool hidden = name.empty() || name[0] == '.';
       if (it->is_directory(ignored)) {
-        if (skipped) it.disable_recursion_pending();
-      } else if (!skipped && isCadFileName(name) && it->is_regular_file(ignored)) {
+        if (hidden || (!skip_.empty() && fs::equivalent(it->path(), skip_, ignored))) it.disable_recursion_pending();
+      } else if (!hidden && isCadFileName(name) && it->is_regular_file(ignored)) {
         files.push_back(it->path().lexically_normal());
       }
     }
@@ -98,7 +117,8 @@ class InputCollector {
       const auto first = line.find_first_not_of(" \t\r");
       if (first == std::string::npos || line[first] == '#') continue;
       const auto last = line.find_last_not_of(" \t\r");
-      const fs::path entry = absolute(base / line.substr(first, last - first + 1));  // absolute entries stay as they are
+      // base / "/abs/path" is "/abs/path": absolute entries stay as they are.
+      const fs::path entry = absolute(base / line.substr(first, last - first + 1));
       std::error_code ec;
       if (fs::is_directory(entry, ec))
         addFolder(entry);
@@ -109,8 +129,6 @@ class InputCollector {
 
   fs::path skip_;
   std::vector<BatchInput> inputs_;
-  std::set<std::string> seenPaths_;
-  std::map<std::string, std::string> pathOfOutput_;
 };
 
 }  // namespace

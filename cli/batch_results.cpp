@@ -105,29 +105,34 @@ json readSolidSummaries(const std::string& folder) {
   return solids;
 }
 
-std::map<std::string, json> readLastRecords(const std::string& resultsPath) {
-  std::map<std::string, json> last;
+std::map<std::string, LastRecord> readLastRecords(const std::string& resultsPath) {
+  std::map<std::string, LastRecord> last;
   std::ifstream in(resultsPath);
   std::string line;
   while (std::getline(in, line)) {
-    json record = json::parse(line, nullptr, false);
-    if (!record.is_object() || !record.contains("output") || !record["output"].is_string()) continue;
-    const std::string output = record["output"].get<std::string>();
-    last[output] = std::move(record);
+    const json r = json::parse(line, nullptr, false);
+    if (!r.is_object() || !r.contains("output") || !r["output"].is_string()) continue;
+    LastRecord record;
+    record.path = r.value("path", "");
+    record.status = r.value("status", "");
+    const json solids = r.value("solids", json::array());
+    for (const json& s : solids.is_array() ? solids : json::array()) {
+      record.solids.push_back(s.is_object() ? s.value("solid", -1) : -1);
+      record.solidHasEval.push_back(s.is_object() && s.contains("eval"));
+    }
+    last[r["output"].get<std::string>()] = std::move(record);
   }
   return last;
 }
 
-bool outputsComplete(const json& record, const std::string& folder) {
-  if (record.value("status", "") != "ok") return false;
-  const json solids = record.value("solids", json::array());
-  if (!solids.is_array() || solids.empty()) return false;
+bool outputsComplete(const LastRecord& record, const std::string& folder) {
+  if (record.status != "ok" || record.solids.empty()) return false;
   std::error_code ec;
-  for (const json& s : solids) {
-    const fs::path dir = fs::path(folder) / ("solid_" + std::to_string(s.value("solid", -1)));
+  for (std::size_t i = 0; i < record.solids.size(); ++i) {
+    const fs::path dir = fs::path(folder) / ("solid_" + std::to_string(record.solids[i]));
     for (const char* name : kSolidFiles)
       if (!fs::is_regular_file(dir / name, ec)) return false;
-    if (s.contains("eval") && !fs::is_regular_file(dir / "eval.json", ec)) return false;
+    if (record.solidHasEval[i] && !fs::is_regular_file(dir / "eval.json", ec)) return false;
   }
   return true;
 }

@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -32,12 +33,21 @@ nlohmann::ordered_json toJson(const FileResult& result);
 // stage seconds from summary.json, the headline metrics of eval.json.
 nlohmann::json readSolidSummaries(const std::string& folder);
 
+// What --resume needs of a file's last record; only this is kept in memory,
+// since a results.jsonl of a million files holds gigabytes of parsed JSON.
+struct LastRecord {
+  std::string path;
+  std::string status;
+  std::vector<int> solids;         // the solid_<i> folders the record vouches for
+  std::vector<bool> solidHasEval;  // ... and which of them have eval.json
+};
+
 // Last parsable record per output folder. A torn last line (batch killed while
 // writing) is skipped, not fatal.
-std::map<std::string, nlohmann::json> readLastRecords(const std::string& resultsPath);
+std::map<std::string, LastRecord> readLastRecords(const std::string& resultsPath);
 
 // True if `record` is ok and every file it vouches for exists under `folder`.
-bool outputsComplete(const nlohmann::json& record, const std::string& folder);
+bool outputsComplete(const LastRecord& record, const std::string& folder);
 
 // Appends records to results.jsonl, each with one write() and an fsync, so a
 // record on disk is complete and survives a crash of the machine.

@@ -208,9 +208,11 @@ class BatchRunner {
     int ms = 500;  // progress redraw
     if (options_.timeoutSeconds <= 0) return ms;
     const auto now = Clock::now();
-    for (const Job& job : running_)
-      if (!job.timedOut)
-        ms = std::min<int>(ms, std::max<long>(1, std::chrono::duration_cast<std::chrono::milliseconds>(job.deadline - now).count() + 1));
+    for (const Job& job : running_) {
+      if (job.timedOut) continue;
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(job.deadline - now).count();
+      ms = int(std::clamp<long long>(left + 1, 1, ms));
+    }
     return ms;
   }
 
@@ -279,7 +281,14 @@ class BatchRunner {
   void publishOrDiscard(const Job& job, FileResult& r) {
     const fs::path target = outDir_ / r.output;
     std::error_code ec;
-    if (fs::exists(target, ec)) fs::rename(target, stageOf(job) / "previous", ec);
+    // Only folders are outputs: `batch results.jsonl -o .` must not take the log away.
+    std::error_code missing;  // ENOENT is the usual case, not an error
+    const fs::file_status existing = fs::symlink_status(target, missing);
+    if (fs::exists(existing) && !fs::is_directory(existing)) {
+      if (r.status == FileStatus::Ok) failPublish(r, target.string() + " exists and is not an output folder");
+      return;
+    }
+    if (fs::exists(existing)) fs::rename(target, stageOf(job) / "previous", ec);
     if (ec) return failPublish(r, "cannot move old outputs " + target.string() + " aside: " + ec.message());
     if (r.status != FileStatus::Ok) return;
     fs::create_directories(target.parent_path(), ec);
@@ -338,7 +347,7 @@ int runBatchCommand(const BatchOptions& options) {
     const auto last = readLastRecords(resultsPath);
     for (BatchInput& in : inputs) {
       const auto it = last.find(in.output);
-      const bool done = it != last.end() && it->second.value("path", "") == in.path &&
+      const bool done = it != last.end() && it->second.path == in.path &&
                         outputsComplete(it->second, (outDir / in.output).string());
       if (!done) todo.push_back(std::move(in));
     }

@@ -1,6 +1,7 @@
 #include <stdexcept>
 
 #include "cadmedial/medial.hpp"
+#include "cadmedial/cell_sides.hpp"
 #include "cadmedial/timer.hpp"
 
 namespace cadmedial {
@@ -36,7 +37,9 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
   r.times.convexEdges = r.forced.convexSeconds;
   r.times.corners = r.forced.cornerSeconds;
 
-  r.labels = separateInnerOuter(dv, samples, selected, r.forced, params, oracle);
+  std::vector<std::uint8_t> cellInside;
+  if (params.walkStaysOutside) cellInside = classifyCellSides(dv, samples, outwardSampleNormals(samples));
+  r.labels = separateInnerOuter(dv, samples, selected, r.forced, params, oracle, cellInside);
   r.times.walk = r.labels.seconds;
   r.times.oracle = r.labels.oracleSeconds;
 

@@ -35,7 +35,8 @@ Vec3 forcedCentroid(const DelaunayVoronoi& dv, const SampleSet& samples, const F
 
 InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& samples,
                                     const SelectedFacets& selected, const ForcedTriangles& forced,
-                                    const MedialParams& params, const InsideOracle& oracle) {
+                                    const MedialParams& params, const InsideOracle& oracle,
+                                    const std::vector<std::uint8_t>& cellInside) {
   Stopwatch watch;
   InnerOuterLabels out;
   const std::size_t nf = selected.size();
@@ -85,6 +86,11 @@ InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& 
           }
         }
         if (x == kNoIndex) continue;  // triangle p q ∞: no other finite edge
+        if (!cellInside.empty() && (cellInside[ring[t]] || cellInside[ring[(t + 1) % k]])) {
+          for (Index g : {selected.find(p, x), selected.find(q, x)})
+            if (g != kNoIndex && !out.facetOuter[g]) ++out.surfaceCrossingsRefused;
+          continue;
+        }
         const bool blocked = blocks[p] || blocks[q] || blocks[x];
         for (Index g : {selected.find(p, x), selected.find(q, x)}) {
           if (g == kNoIndex || out.facetOuter[g]) continue;

@@ -14,6 +14,7 @@ import os
 import shutil
 import signal
 import sys
+import time
 import uuid
 
 from . import job
@@ -22,7 +23,7 @@ from .progress import Progress
 from .results import OutputError, ResultsLog, outputs_complete, read_last_records
 
 EXIT_OK, EXIT_SOME_FAILED, EXIT_USAGE, EXIT_OUTPUT_FAILED = 0, 1, 2, 5
-GRACE_SECONDS = 30  # after an interrupt, how long to wait for files that already finished
+GRACE_SECONDS = 10  # after an interrupt, how long to wait for files that already finished
 
 
 class Stopped(Exception):
@@ -67,6 +68,8 @@ def parse_args(argv):
         value = getattr(args, name)
         if value is not None and value <= 0:
             p.error("--%s must be positive" % name.replace("_", "-"))
+    if args.theta is not None and not 0 <= args.theta <= 89:
+        p.error("--theta must be in [0, 89]")
     if not args.cadmedial:
         p.error("no cadmedial executable found; pass --cadmedial PATH")
     return args
@@ -89,9 +92,26 @@ def connect(args):
     # A worker that dies fails its file at once (a crash record) rather than the
     # scheduler handing the same file to the next worker to kill.
     dask.config.set({"distributed.scheduler.allowed-failures": 0})
-    cluster = LocalCluster(n_workers=args.local, threads_per_worker=args.threads_per_worker, processes=True,
-                           host="127.0.0.1", dashboard_address=None, memory_limit=0)
-    return Client(cluster), cluster
+    # Ctrl-C on a terminal reaches the whole process group, local workers
+    # included; they must not die of it (the driver decides what to stop).
+    # Worker processes inherit an ignored SIGINT (and then Python and asyncio
+    # leave it alone); restarted workers get it from _IgnoreInterrupt.
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        cluster = LocalCluster(n_workers=args.local, threads_per_worker=args.threads_per_worker, processes=True,
+                               host="127.0.0.1", dashboard_address=None, memory_limit=0)
+        client = Client(cluster)
+        client.register_worker_plugin(_IgnoreInterrupt(), name="cadmedial-ignore-sigint")
+        return client, cluster
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
+class _IgnoreInterrupt:
+    """Worker plugin of local clusters: see connect()."""
+
+    def setup(self, worker):
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
 def _lost_record(path, output, error):
@@ -171,14 +191,16 @@ class Driver:
         from distributed import wait
         open(os.path.join(self.stage_root, job.STOP_MARKER), "w").close()  # tasks starting now return at once
         futures = list(self.pending)
-        for _ in range(GRACE_SECONDS):
+        deadline = time.monotonic() + GRACE_SECONDS
+        while True:
+            # Again each round: a task may have started its child just before the marker appeared.
             try:
-                # Again each round: a task may have started its child just before the marker appeared.
-                self.client.run(job.kill_staged_children, self.stage_root)
+                self.client.run(job.kill_staged_children, self.stage_root, on_error="ignore")
                 wait(futures, timeout=1)
                 break
             except Exception:  # noqa: BLE001 - timeout, or a worker gone while shutting down
-                continue
+                if time.monotonic() > deadline:
+                    break
         for f in futures:
             r = self.collect(f) if f.status == "finished" else None
             if r is not None and r["status"] == "ok":

@@ -214,7 +214,11 @@ def run_file(executable, path, output, out_dir, stage, run_args, timeout=None, m
     # Outputs under OUTDIR/<output>/ exist exactly when the last record is ok.
     target = os.path.join(out_dir, output)
     try:
-        if os.path.lexists(target):
+        if os.path.lexists(target) and (os.path.islink(target) or not os.path.isdir(target)):
+            # Only folders are outputs: `results.jsonl` given as an input must not take the log away.
+            if status == "ok":
+                raise FileExistsError(17, "exists and is not an output folder")
+        elif os.path.lexists(target):
             os.rename(target, os.path.join(stage, "previous"))
         if status == "ok":
             os.makedirs(os.path.dirname(target), exist_ok=True)

@@ -7,7 +7,6 @@ CADMEDIAL_MODELS_DIR, CADMEDIAL_PUBLIC_MODELS_DIR, CADMEDIAL_PYTHON_DIR.
 import json
 import os
 import shutil
-import signal
 import subprocess
 import sys
 import tempfile

@@ -98,7 +98,8 @@ TEST_F(BatchUnits, LastRecordWinsAndATornLineIsSkippedAndRepaired) {
                       << R"({"output":"b.step","sta)";
   auto last = readLastRecords(path);
   ASSERT_EQ(last.size(), 1u);
-  EXPECT_EQ(last["a.step"]["status"], "ok");
+  EXPECT_EQ(last["a.step"].status, "ok");
+  EXPECT_EQ(last["a.step"].solids, std::vector<int>{0});
   {
     ResultsLog log(path);
     FileResult r;
@@ -109,12 +110,17 @@ TEST_F(BatchUnits, LastRecordWinsAndATornLineIsSkippedAndRepaired) {
   }
   last = readLastRecords(path);
   ASSERT_EQ(last.size(), 2u);
-  EXPECT_EQ(last["b.step"]["status"], "timeout");
-  EXPECT_TRUE(last["b.step"]["exit_code"].is_null());
+  EXPECT_EQ(last["b.step"].status, "timeout");
+  EXPECT_EQ(last["b.step"].path, "/x/b.step");
+  std::ifstream in(path);
+  std::string line, lastLine;
+  while (std::getline(in, line)) lastLine = line;
+  EXPECT_EQ(lastLine.rfind(R"({"path":"/x/b.step","output":"b.step","status":"timeout","exit_code":null,)", 0), 0u)
+      << lastLine;
 }
 
 TEST_F(BatchUnits, OutputsCompleteNeedsEveryFileOfEverySolid) {
-  const nlohmann::json record = {{"status", "ok"}, {"solids", {{{"solid", 0}}, {{"solid", 1}, {"eval", {}}}}}};
+  const LastRecord record{"/m.step", "ok", {0, 1}, {false, true}};
   for (const char* f : {"medial.ply", "medial.obj", "medial.ma", "summary.json"}) {
     touch(std::string("o/solid_0/") + f);
     touch(std::string("o/solid_1/") + f);
@@ -125,7 +131,7 @@ TEST_F(BatchUnits, OutputsCompleteNeedsEveryFileOfEverySolid) {
   EXPECT_TRUE(outputsComplete(record, folder));
   fs::remove(dir_ / "o/solid_0/medial.ma");
   EXPECT_FALSE(outputsComplete(record, folder));
-  EXPECT_FALSE(outputsComplete({{"status", "error"}, {"solids", nlohmann::json::array()}}, folder));
+  EXPECT_FALSE(outputsComplete(LastRecord{"/m.step", "error", {}, {}}, folder));
 }
 
 TEST_F(BatchUnits, SolidSummariesCarryCountsTimesAndEvalHeadline) {

@@ -6,6 +6,7 @@ LocalCluster of two worker processes on loopback.
     tests/batch/test_dask_batch.py [TestClass...]
 """
 
+import importlib.util
 import os
 import signal
 import subprocess
@@ -14,9 +15,7 @@ import sys
 from batch_testlib import (CADMEDIAL, FAST, MODELS_DIR, PYTHON_DIR, BatchTestCase, last_records, main,
                            processes_mentioning, public_model, read_records, wait_for, write_bad_files)
 
-try:
-    import distributed  # noqa: F401
-except ImportError:
+if importlib.util.find_spec("distributed") is None:
     print("python3-distributed is not installed: skipped")
     sys.exit(77)
 

@@ -50,6 +50,7 @@ struct InnerOuterLabels {
   std::size_t outerFacets = 0;
   std::size_t innerFacets = 0;            // selected facets not reached (all bounded)
   std::size_t blockedCrossings = 0;       // crossings refused by walkBlocking
+  std::size_t surfaceCrossingsRefused = 0;  // crossings refused: the Voronoi edge is not wholly outside
   std::size_t blockedCrossingsToInner = 0;  // ... whose target facet stayed inner
   std::size_t outerCornerTriangles = 0;   // corner triangles hanging on an outer facet
   std::size_t outerConvexTriangles = 0;   // convex-edge (fan) triangles hanging on an outer facet
@@ -65,8 +66,11 @@ struct InnerOuterLabels {
   double oracleSeconds = 0;
 };
 
+// cellInside: per cell id, 1 if its Voronoi vertex is inside the sampled
+// surface (classifyCellSides); empty = no such restriction on the walk.
 InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& samples,
                                     const SelectedFacets& selected, const ForcedTriangles& forced,
-                                    const MedialParams& params, const InsideOracle& oracle = {});
+                                    const MedialParams& params, const InsideOracle& oracle = {},
+                                    const std::vector<std::uint8_t>& cellInside = {});
 
 }  // namespace cadmedial

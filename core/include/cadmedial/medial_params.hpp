@@ -24,6 +24,11 @@ struct MedialParams {
   // Ratio condition [ρ]: |pq| > ρ · (largest umbrella circumradius at p).
   double rho = 8.0;
   WalkBlocking walkBlocking = WalkBlocking::None;  // measured best, see inner_outer.hpp
+  // The outer walk only crosses Voronoi edges whose two ends lie outside the
+  // sampled surface (cell_sides.hpp). Where sampling is coarse for the local
+  // feature size, Voronoi facets straddle the surface and would otherwise
+  // carry the walk into the inner axis (a whole part labelled outer).
+  bool walkStaysOutside = true;
   // Compute β2 (and so β1) exactly only while the 2-core left after free-face
   // collapses has at most this many polygons; otherwise β1 = β2 = -1.
   std::size_t bettiCoreLimit = 200000;

@@ -1,0 +1,106 @@
+#include "cadmedial/cell_sides.hpp"
+
+#include <cmath>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include "cadmedial/surface_mesh_checks.hpp"
+
+namespace cadmedial {
+
+namespace {
+
+using Kernel = DelaunayVoronoi::Kernel;
+using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+using Side = CGAL::Side_of_triangle_mesh<Mesh, Kernel>;
+
+// Majority vote of the tangent planes at the cell's samples (see header).
+bool insideByTangentPlanes(const DelaunayVoronoi& dv, const SampleSet& samples, const std::vector<Vec3>& normals,
+                           Index id) {
+  const Vec3& c = dv.circumcenter(id);
+  int votes = 0;
+  for (int i = 0; i < 4; ++i) {
+    const Index p = dv.cellSample(id, i);
+    if (p == kNoIndex || p >= samples.size()) continue;
+    const Vec3& x = samples.points[p];
+    const Vec3& n = normals[p];
+    const double side = (c[0] - x[0]) * n[0] + (c[1] - x[1]) * n[1] + (c[2] - x[2]) * n[2];
+    votes += side < 0 ? 1 : (side > 0 ? -1 : 0);
+  }
+  return votes > 0;
+}
+
+}  // namespace
+
+std::vector<Vec3> outwardSampleNormals(const SampleSet& s) {
+  std::vector<Vec3> normals(s.size(), Vec3{0, 0, 0});
+  for (const auto& t : s.triangles) {
+    const Vec3 &a = s.points[t[0]], &b = s.points[t[1]], &c = s.points[t[2]];
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const Vec3 n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    for (Index i : t)
+      for (int k = 0; k < 3; ++k) normals[i][k] += n[k];  // |n| = 2 × area: area weighting
+  }
+  for (Vec3& n : normals) {
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (len > 0)
+      for (double& x : n) x /= len;
+  }
+  return normals;
+}
+
+std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const SampleSet& samples,
+                                            const std::vector<Vec3>& normals) {
+  const std::size_t m = dv.cellCount();
+  std::vector<std::uint8_t> inside(m, 0);
+  // An empty ball inside the solid fits in its bounding box: centres outside
+  // the box, or radii above half its diagonal, are outside whatever else says
+  // (the far centres of flat cells on the convex hull).
+  const double halfDiagonal = 0.5 * samples.bboxDiagonal();
+  auto inBox = [&](const Vec3& c) {
+    for (int k = 0; k < 3; ++k)
+      if (!(c[k] >= samples.bboxMin[k] && c[k] <= samples.bboxMax[k])) return false;
+    return true;
+  };
+
+  // When the reconstruction is a closed manifold, an exact point-in-mesh test
+  // (CGAL AABB tree, ray parity) decides; otherwise the tangent-plane vote.
+  Mesh mesh;
+  const bool closed = !samples.triangles.empty() && checkSurfaceMesh(samples.points, samples.triangles).closedManifold();
+  std::unique_ptr<Tree> tree;
+  if (closed) {
+    std::vector<Mesh::Vertex_index> vertex(samples.size());
+    for (Index i = 0; i < samples.size(); ++i)
+      vertex[i] = mesh.add_vertex(Kernel::Point_3(samples.points[i][0], samples.points[i][1], samples.points[i][2]));
+    for (const auto& t : samples.triangles) mesh.add_face(vertex[t[0]], vertex[t[1]], vertex[t[2]]);
+    tree = std::make_unique<Tree>(faces(mesh).first, faces(mesh).second, mesh);
+    tree->accelerate_distance_queries();
+  }
+  tbb::enumerable_thread_specific<std::unique_ptr<Side>> sides;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 2048), [&](const tbb::blocked_range<std::size_t>& r) {
+    std::unique_ptr<Side>& side = sides.local();
+    if (tree && !side) side = std::make_unique<Side>(*tree);
+    for (std::size_t id = r.begin(); id != r.end(); ++id) {
+      const Index cell = static_cast<Index>(id);
+      if (dv.isInfinite(cell)) continue;
+      const Vec3& c = dv.circumcenter(cell);
+      if (!(dv.circumradius(cell) <= halfDiagonal) || !inBox(c)) continue;
+      if (side)
+        inside[id] = (*side)(Kernel::Point_3(c[0], c[1], c[2])) == CGAL::ON_BOUNDED_SIDE ? 1 : 0;
+      else
+        inside[id] = insideByTangentPlanes(dv, samples, normals, cell) ? 1 : 0;
+    }
+  });
+  return inside;
+}
+
+}  // namespace cadmedial
