@@ -6,6 +6,8 @@ Headless use (freecadcmd, or plain python3 after plugin/install.sh)::
     for axis in cadmedial.compute("models/flange.step", spacing=2.0):
         print(axis.sheet_count, axis.summary["topology"])
         axis.write("flange_medial.ply")
+        report = cadmedial.evaluate("models/flange.step", axis)   # exact-geometry metrics
+        print("\n".join(cadmedial.evaluation_lines(report)))
 
     # inside FreeCAD: a Part shape or a document object works as well
     results = cadmedial.compute(doc.Box.Shape)
@@ -22,6 +24,8 @@ from .api import (
     SampleResult,
     compute,
     estimate_samples,
+    evaluate,
+    evaluation_lines,
     inspect,
     sample,
     to_source,
@@ -37,6 +41,8 @@ __all__ = [
     "add_to_document",
     "compute",
     "estimate_samples",
+    "evaluate",
+    "evaluation_lines",
     "inspect",
     "sample",
     "sync_sheets",

@@ -300,6 +300,43 @@ def compute(source, spacing=0.0, theta=5.0, rho=8.0, pair_mesh=False, check_insi
     return [MedialAxisResult(d, theta, rho) for d in raw]
 
 
+def evaluate(source, result, solid=None, tolerance=0.005):
+    """Measures `result` (a MedialAxisResult) against the exact B-rep of solid
+    `solid` of `source` (default: result.solid), as `cadmedial eval` does
+    (DESIGN.md section 6). Returns the eval.json dict: inside, medialness,
+    coverage, attachment, topology, thresholds and pass (per check and "all").
+    tol = tolerance x the bounding-box diagonal."""
+    index = result.solid if solid is None else int(solid)
+    if index < 0:
+        raise ValueError(f"solid must be >= 0, got {index}")
+    return _native.evaluate(
+        to_source(source), index, result.vertices, result.radius, result.offsets, result.indices,
+        result.sheet, result.provenance, float(tolerance),
+    )
+
+
+def evaluation_lines(report):
+    """The eval.json dict of evaluate() as readable lines (the eval table)."""
+    def mark(key):
+        return "ok" if report["pass"][key] else "FAIL"
+
+    med, cov, att, top = report["medialness"], report["coverage"], report["attachment"], report["topology"]
+    return [
+        f"tol = {report['tolerance']:.4g} ({100 * report['tolerance_fraction']:.2g} % of the diagonal "
+        f"{report['diagonal']:.4g})",
+        f"inside: {100 * report['inside']['share']:.2f} % of the sheet area [{mark('inside')}]",
+        f"medialness |d - r| / diagonal: median {100 * med['median']:.3f} %, p90 {100 * med['p90']:.3f} %, "
+        f"max {100 * med['max']:.3f} % [{mark('medialness')}]",
+        f"two contacts: {100 * med['two_contact_share']:.1f} % of vertices [{mark('two_contacts')}]",
+        f"coverage: {100 * cov['share']:.2f} % of {cov['points']} boundary points [{mark('coverage')}]",
+        f"convex edges attached: {100 * att['edge_share']:.2f} % of their length [{mark('edges')}]",
+        f"non-concave corners attached: {att['attached_corners']}/{att['corners']} [{mark('corners')}]",
+        f"topology: beta0 {top['medial']['beta0']}, beta1 {top['medial']['beta1']} "
+        f"(solid {top['solid']['beta0']}, {top['solid']['beta1']}) [{mark('topology')}]",
+        "verdict: " + ("PASS" if report["pass"]["all"] else "FAIL"),
+    ]
+
+
 def sample(source, spacing=0.0, progress=None, cancel=None):
     """Boundary samples of every closed solid of `source`; one SampleResult per solid."""
     _check_params(spacing, 5.0, 8.0)

@@ -786,14 +786,10 @@ def evaluate(obj):
         f"triplets not Delaunay: {diagnostics.get('triplets_not_delaunay', 0)}, "
         f"samples without umbrella: {diagnostics.get('samples_without_umbrella', 0)}"
     )
-    evaluator = getattr(api, "evaluate", None)
-    if evaluator is None:
-        lines.append(
-            "exact-geometry evaluation (inside share, medialness, coverage, attachment; DESIGN.md section 6): "
-            "not available yet"
-        )
-    else:
-        lines.extend(evaluator(obj.Source, result))
+    solid = source_solid(obj.Source, obj.SolidIndex)
+    report = api.evaluate(solid, result, solid=0)
+    lines.append("exact-geometry evaluation (DESIGN.md section 6):")
+    lines.extend("  " + line for line in api.evaluation_lines(report))
     return lines
 
 

@@ -32,6 +32,8 @@
 #include <TopoDS_Solid.hxx>
 
 #include "atomic_file.hpp"
+#include "eval_command.hpp"
+#include "medial_mesh_conversion.hpp"
 #include "cadmedial/brep_io.hpp"
 #include "cadmedial/errors.hpp"
 #include "cadmedial/sampling.hpp"
@@ -419,6 +421,41 @@ void writeMedial(const std::string& path, const std::string& format,
   });
 }
 
+// ---------------------------------------------------------------------------
+// evaluate: the DESIGN.md §6 metrics of `cadmedial eval` for one solid's axis.
+
+py::object evaluate(const std::string& source, std::size_t solid,
+                  const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
+                  const py::array_t<double, py::array::c_style | py::array::forcecast>& radius,
+                  const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& offsets,
+                  const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& indices,
+                  const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& sheet,
+                  const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& provenance,
+                  double tolerance) {
+  if (!(tolerance > 0 && tolerance < 1))
+    throw py::value_error("tolerance must be a fraction of the bounding-box diagonal in (0, 1)");
+  MedialComplex c = complexFromArrays(vertices, radius, offsets, indices, sheet);
+  if (provenance.ndim() != 1 || static_cast<std::size_t>(provenance.shape(0)) != c.sheet.size())
+    throw py::value_error("provenance must have one value per polygon");
+  for (std::size_t p = 0; p < c.provenance.size(); ++p) {
+    const std::int64_t v = provenance.data()[p];
+    if (v < 0 || v > 3) throw py::value_error("provenance values are 0..3");
+    c.provenance[p] = static_cast<PolygonProvenance>(v);
+  }
+  Progress none{py::none()};
+  EvaluationReport report;
+  runWithoutGil(none, [&] {
+    const Input input = readInput(source);
+    if (solid >= input.solids.size())
+      throw py::value_error("solid " + std::to_string(solid) + " out of range: the source has " +
+                            std::to_string(input.solids.size()) + " closed solid(s)");
+    EvaluationParams params;
+    params.toleranceFraction = tolerance;
+    report = evaluateMedial(input.solids[solid], toMedialMesh(c), params);
+  });
+  return jsonToPython(toJson(report));
+}
+
 }  // namespace
 }  // namespace cadmedial
 
@@ -465,5 +502,11 @@ triangle_face, spacing, warnings and report (the sampling.json dict).)");
         py::arg("offsets"), py::arg("indices"), py::arg("sheet"),
         "Writes a medial axis as 'obj' (groups per sheet) or 'ma' (Q-MAT), atomically, in the "
         "command line's format.");
+  m.def("evaluate", &evaluate, py::arg("source"), py::arg("solid"), py::arg("vertices"), py::arg("radius"),
+        py::arg("offsets"), py::arg("indices"), py::arg("sheet"), py::arg("provenance"), py::arg("tolerance") = 0.005,
+        R"(Measures a medial axis of solid `solid` of `source` against the exact B-rep
+(DESIGN.md section 6), as `cadmedial eval` does: returns its eval.json dict
+(inside, medialness, coverage, attachment, topology, thresholds, pass).
+tolerance: the fraction of the bounding-box diagonal used as tol.)");
   m.attr("PAIR_MESH_AVAILABLE") = false;
 }

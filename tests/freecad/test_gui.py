@@ -213,8 +213,13 @@ def main():
 
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(doc.Name, axis.Name)
+    from freecad.medial_axis import commands
+
+    commands.last_evaluation.clear()
     Gui.runCommand("MedialAxis_Evaluate")
-    check(True, "Evaluate runs")
+    lines = commands.last_evaluation.get(axis.Name, [])
+    check(any(line.strip() == "verdict: PASS" for line in lines),
+          "Evaluate measures the axis against the exact solid: " + (lines[-1].strip() if lines else "no output"))
 
     # Saved from the GUI and reopened: view providers, colours and tree intact.
     copy = os.path.join(os.environ["CADMEDIAL_TEST_TMP"], "gui_copy.FCStd")

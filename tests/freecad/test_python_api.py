@@ -2,6 +2,7 @@
 (run by run_freecad_test.sh: the package is found through the .pth file the
 install put into the temporary HOME's user site-packages). No FreeCAD here."""
 
+import copy
 import importlib.util
 import os
 import sys
@@ -43,6 +44,21 @@ def main():
     check(set(np.unique(axis.provenance)) <= {0, 1, 2, 3}, "provenance codes 0..3")
     check(axis.summary["counts"]["medial_polygons"] == axis.polygon_count, "summary dict matches the arrays")
     check(axis.beta0 == 1, f"L-bracket: beta0 {axis.beta0}, beta1 {axis.beta1}")
+    bracket = os.path.join(models, "l_bracket.step")
+    report = cadmedial.evaluate(bracket, axis)
+    check(report["pass"]["all"], "evaluate: the L-bracket axis passes every exact-geometry check: "
+          + "; ".join(cadmedial.evaluation_lines(report)))
+    # The same axis pushed off by 5 % of the diagonal must fail medialness and coverage.
+    moved = copy.copy(axis)
+    moved.vertices = axis.vertices + 0.05 * report["diagonal"] / np.sqrt(3.0)
+    bad = cadmedial.evaluate(bracket, moved)
+    check(not bad["pass"]["medialness"] and not bad["pass"]["all"],
+          f"evaluate: a displaced axis fails (medialness median {100 * bad['medialness']['median']:.2f} % diag)")
+    try:
+        cadmedial.evaluate(bracket, axis, solid=1)
+        check(False, "evaluate: solid out of range raises")
+    except ValueError as e:
+        check("out of range" in str(e), f"evaluate: solid out of range raises ValueError ({e})")
     tri, poly = axis.triangles()
     check(tri.shape[0] == int((np.diff(axis.offsets) - 2).sum()), f"{tri.shape[0]} fan triangles")
 

@@ -158,14 +158,17 @@ def _safe_name(label):
     return "".join(c if c.isalnum() or c in "-_." else "_" for c in label) or "medial"
 
 
+# Lines of the latest evaluation per MedialAxis object name (for scripts and tests).
+last_evaluation = {}
+
+
 class EvaluateCommand:
     def GetResources(self):
         return {
             "Pixmap": icon("Evaluate.svg"),
             "MenuText": "Evaluate medial axis",
-            "ToolTip": "Check the selected medial axes: topology against the solid and the inner/outer walk "
-            "against the exact classifier. The exact-geometry evaluation (inside, medialness, coverage, "
-            "attachment) is not available yet.",
+            "ToolTip": "Measure the selected medial axes against the exact solid (inside share, medialness, "
+            "coverage, convex-edge and corner attachment, topology) and show the table in the Report view.",
         }
 
     def IsActive(self):
@@ -182,6 +185,7 @@ class EvaluateCommand:
             except Exception as e:  # noqa: BLE001
                 report_error(f"could not evaluate '{obj.Label}': {e}")
                 continue
+            last_evaluation[obj.Name] = lines
             App.Console.PrintMessage(f"Medial Axis: evaluation of '{obj.Label}':\n")
             for line in lines:
                 App.Console.PrintMessage(f"  {line}\n")
