@@ -35,6 +35,8 @@ nlohmann::json medialSummaryJson(const SamplingReport& sampling, const MedialRes
                       {"samples_without_umbrella", c.samplesWithoutUmbrella},
                       {"degenerate_umbrella_triangles", c.degenerateUmbrellaTriangles},
                       {"walk_blocked_crossings", c.walkBlockedCrossings},
+                      {"walk_surface_crossings_refused", c.walkSurfaceCrossingsRefused},
+                      {"inner_facets_outside_surface", c.innerFacetsOutsideSurface},
                       {"walk_oracle_checked", c.oracleChecked},
                       {"walk_oracle_disagreements", c.oracleDisagreements}};
   j["seconds"] = {{"classify", sampling.secondsClassify},

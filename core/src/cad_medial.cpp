@@ -37,9 +37,12 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
   r.times.convexEdges = r.forced.convexSeconds;
   r.times.corners = r.forced.cornerSeconds;
 
-  std::vector<std::uint8_t> cellInside;
-  if (params.walkStaysOutside) cellInside = classifyCellSides(dv, samples, outwardSampleNormals(samples));
-  r.labels = separateInnerOuter(dv, samples, selected, r.forced, params, oracle, cellInside);
+  std::vector<std::uint8_t> cellSide;
+  if (params.walkStaysOutside)
+    cellSide = classifyCellSides(dv, samples, outwardSampleNormals(samples),
+                                 params.nearSurfaceFraction *
+                                     (samples.spacing > 0 ? samples.spacing : samples.bboxDiagonal() / 40));
+  r.labels = separateInnerOuter(dv, samples, selected, r.forced, params, oracle, cellSide);
   r.times.walk = r.labels.seconds;
   r.times.oracle = r.labels.oracleSeconds;
 
@@ -76,6 +79,8 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
   c.samplesWithoutUmbrella = umbrellas.samplesWithoutUmbrella;
   c.sheets = r.sheetCount;
   c.walkBlockedCrossings = r.labels.blockedCrossings;
+  c.walkSurfaceCrossingsRefused = r.labels.surfaceCrossingsRefused;
+  c.innerFacetsOutsideSurface = r.labels.innerFacetsOutsideSurface;
   c.oracleChecked = r.labels.oracleFacetsChecked;
   c.oracleDisagreements = r.labels.oracleFacetDisagreements;
   c.oracleForcedChecked = r.labels.oracleForcedChecked;

@@ -59,16 +59,16 @@ std::vector<Vec3> outwardSampleNormals(const SampleSet& s) {
 }
 
 std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const SampleSet& samples,
-                                            const std::vector<Vec3>& normals) {
+                                            const std::vector<Vec3>& normals, double nearTolerance) {
   const std::size_t m = dv.cellCount();
-  std::vector<std::uint8_t> inside(m, 0);
+  std::vector<std::uint8_t> side(m, kCellOutside);
   // An empty ball inside the solid fits in its bounding box: centres outside
   // the box, or radii above half its diagonal, are outside whatever else says
   // (the far centres of flat cells on the convex hull).
   const double halfDiagonal = 0.5 * samples.bboxDiagonal();
   auto inBox = [&](const Vec3& c) {
     for (int k = 0; k < 3; ++k)
-      if (!(c[k] >= samples.bboxMin[k] && c[k] <= samples.bboxMax[k])) return false;
+      if (!(c[k] >= samples.bboxMin[k] - nearTolerance && c[k] <= samples.bboxMax[k] + nearTolerance)) return false;
     return true;
   };
 
@@ -85,22 +85,28 @@ std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const Sam
     tree = std::make_unique<Tree>(faces(mesh).first, faces(mesh).second, mesh);
     tree->accelerate_distance_queries();
   }
+  const double nearSquared = nearTolerance * nearTolerance;
   tbb::enumerable_thread_specific<std::unique_ptr<Side>> sides;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 2048), [&](const tbb::blocked_range<std::size_t>& r) {
-    std::unique_ptr<Side>& side = sides.local();
-    if (tree && !side) side = std::make_unique<Side>(*tree);
+    std::unique_ptr<Side>& inMesh = sides.local();
+    if (tree && !inMesh) inMesh = std::make_unique<Side>(*tree);
     for (std::size_t id = r.begin(); id != r.end(); ++id) {
       const Index cell = static_cast<Index>(id);
       if (dv.isInfinite(cell)) continue;
       const Vec3& c = dv.circumcenter(cell);
       if (!(dv.circumradius(cell) <= halfDiagonal) || !inBox(c)) continue;
-      if (side)
-        inside[id] = (*side)(Kernel::Point_3(c[0], c[1], c[2])) == CGAL::ON_BOUNDED_SIDE ? 1 : 0;
-      else
-        inside[id] = insideByTangentPlanes(dv, samples, normals, cell) ? 1 : 0;
+      if (inMesh) {
+        const Kernel::Point_3 p(c[0], c[1], c[2]);
+        if ((*inMesh)(p) == CGAL::ON_BOUNDED_SIDE)
+          side[id] = kCellInside;
+        else if (nearSquared > 0 && tree->squared_distance(p) <= nearSquared)
+          side[id] = kCellNearOutside;
+      } else if (insideByTangentPlanes(dv, samples, normals, cell)) {
+        side[id] = kCellInside;
+      }
     }
   });
-  return inside;
+  return side;
 }
 
 }  // namespace cadmedial

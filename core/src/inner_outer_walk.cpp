@@ -1,5 +1,6 @@
 #include <vector>
 
+#include "cadmedial/cell_sides.hpp"
 #include "cadmedial/inner_outer.hpp"
 #include "cadmedial/timer.hpp"
 
@@ -36,7 +37,7 @@ Vec3 forcedCentroid(const DelaunayVoronoi& dv, const SampleSet& samples, const F
 InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& samples,
                                     const SelectedFacets& selected, const ForcedTriangles& forced,
                                     const MedialParams& params, const InsideOracle& oracle,
-                                    const std::vector<std::uint8_t>& cellInside) {
+                                    const std::vector<std::uint8_t>& cellSide) {
   Stopwatch watch;
   InnerOuterLabels out;
   const std::size_t nf = selected.size();
@@ -86,7 +87,8 @@ InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& 
           }
         }
         if (x == kNoIndex) continue;  // triangle p q ∞: no other finite edge
-        if (!cellInside.empty() && (cellInside[ring[t]] || cellInside[ring[(t + 1) % k]])) {
+        if (!cellSide.empty() &&
+            (cellSide[ring[t]] == kCellInside || cellSide[ring[(t + 1) % k]] == kCellInside)) {
           for (Index g : {selected.find(p, x), selected.find(q, x)})
             if (g != kNoIndex && !out.facetOuter[g]) ++out.surfaceCrossingsRefused;
           continue;
@@ -105,6 +107,21 @@ InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& 
       }
     }
   }
+  // A facet the walk did not reach but with a Voronoi vertex clearly outside
+  // the sampled surface is outer: islands of the outer axis that no walk
+  // reaches (cut off by refused crossings, or bounded outer pieces), and the
+  // far vertices of nearly cospherical cells that would otherwise hang huge
+  // spikes off the inner axis.
+  if (params.innerNeedsInsideVertices && !cellSide.empty())
+    for (Index f = 0; f < nf; ++f) {
+      if (out.facetOuter[f]) continue;
+      for (const Index* it = selected.ringBegin(f); it != selected.ringEnd(f); ++it)
+        if (cellSide[*it] == kCellOutside) {
+          out.facetOuter[f] = 1;
+          ++out.innerFacetsOutsideSurface;
+          break;
+        }
+    }
   for (Index f = 0; f < nf; ++f) (out.facetOuter[f] ? out.outerFacets : out.innerFacets)++;
   for (Index g : refusedTargets) out.blockedCrossingsToInner += out.facetOuter[g] ? 0 : 1;
 

@@ -9,11 +9,13 @@ using namespace cadmedial::testing;
 
 namespace {
 
-MedialResult run(const PlanarSolid& solid, double h, WalkBlocking blocking = WalkBlocking::None) {
+MedialResult run(const PlanarSolid& solid, double h, WalkBlocking blocking = WalkBlocking::None,
+                 bool relabelOutsideFacets = true) {
   SamplingOptions o;
   o.spacing = h;
   MedialParams p;
   p.walkBlocking = blocking;
+  p.innerNeedsInsideVertices = relabelOutsideFacets;
   return computeCadMedial(samplePlanarSolid(solid, o), p, solid.inside);
 }
 
@@ -58,11 +60,12 @@ TEST(Walk, HoledBoxSeparatesInnerFromOuterAndHasGenusOne) {
 }
 
 TEST(Walk, BlockingAtFeatureSamplesOnlyLosesOuterFacets) {
-  // The measurement behind the default WalkBlocking::None (inner_outer.hpp).
+  // The measurement behind the default WalkBlocking::None (inner_outer.hpp),
+  // on the bare walk (no relabelling of unreached facets).
   for (const PlanarSolid& solid : {makeLPrism(), makeBoxWithSquareHole()}) {
-    const MedialResult none = run(solid, 0.05, WalkBlocking::None);
-    const MedialResult corners = run(solid, 0.05, WalkBlocking::NonConcaveCorners);
-    const MedialResult edges = run(solid, 0.05, WalkBlocking::CornersAndConvexEdges);
+    const MedialResult none = run(solid, 0.05, WalkBlocking::None, false);
+    const MedialResult corners = run(solid, 0.05, WalkBlocking::NonConcaveCorners, false);
+    const MedialResult edges = run(solid, 0.05, WalkBlocking::CornersAndConvexEdges, false);
     std::cout << solid.name << " oracle disagreements: none " << none.counts.oracleDisagreements << ", corners "
               << corners.counts.oracleDisagreements << " (blocked " << corners.counts.walkBlockedCrossings
               << "), corners+convex edges " << edges.counts.oracleDisagreements << " (blocked "
@@ -71,5 +74,19 @@ TEST(Walk, BlockingAtFeatureSamplesOnlyLosesOuterFacets) {
     EXPECT_LT(none.counts.oracleDisagreements, edges.counts.oracleDisagreements);
     EXPECT_GE(none.counts.outerFacets, corners.counts.outerFacets);
     EXPECT_GT(edges.counts.oracleDisagreements, 0.01 * edges.counts.oracleChecked);
+  }
+}
+
+TEST(Walk, UnreachedFacetsOutsideTheSurfaceBecomeOuter) {
+  // The outer islands that blocking at every feature sample cuts off from the
+  // unbounded facets are found again by their Voronoi vertices outside the
+  // sampled surface (innerNeedsInsideVertices, the default).
+  for (const PlanarSolid& solid : {makeLPrism(), makeBoxWithSquareHole()}) {
+    const MedialResult edges = run(solid, 0.05, WalkBlocking::CornersAndConvexEdges, true);
+    std::cout << solid.name << ": " << edges.labels.innerFacetsOutsideSurface << " unreached facets relabelled outer, "
+              << edges.counts.oracleDisagreements << " oracle disagreements of " << edges.counts.oracleChecked << "\n";
+    EXPECT_GT(edges.labels.innerFacetsOutsideSurface, 0.01 * edges.counts.oracleChecked);
+    EXPECT_LE(edges.counts.oracleDisagreements, 0.001 * edges.counts.oracleChecked);
+    EXPECT_GE(innerVerticesInside(edges, solid), 0.999);
   }
 }

@@ -14,13 +14,23 @@ namespace cadmedial {
 // Per sample: area-weighted outward normal of its umbrella (zero if none).
 std::vector<Vec3> outwardSampleNormals(const SampleSet& samples);
 
-// Per cell id: 1 if the cell's circumcenter lies inside the sampled surface.
-// With a closed, manifold reconstruction: CGAL's point-in-mesh test on it.
+// Where a Voronoi vertex (cell circumcenter) lies relative to the sampled surface.
+enum CellSide : std::uint8_t {
+  kCellOutside = 0,      // outside, farther than the tolerance from the surface
+  kCellInside = 1,       // inside
+  kCellNearOutside = 2,  // outside but within the tolerance (chord error of the reconstruction)
+};
+
+// Per cell id, a CellSide. With a closed, manifold reconstruction: CGAL's
+// point-in-mesh test on it, and the distance to it for centres outside.
 // Otherwise a majority vote of the tangent planes at the cell's samples,
-// sign((c - p_i) · n_i) (the empty ball touches the surface there); ties,
-// infinite cells, centres outside the bounding box and radii above half its
-// diagonal count as outside.
+// sign((c - p_i) · n_i) (the empty ball touches the surface there), and no
+// "near" class; ties, infinite cells, centres outside the bounding box and
+// radii above half its diagonal count as outside.
+// nearTolerance: outside centres closer than this to the reconstruction are
+// kCellNearOutside (inner Voronoi vertices near curved convex faces can lie
+// between the chords and the true surface).
 std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const SampleSet& samples,
-                                            const std::vector<Vec3>& normals);
+                                            const std::vector<Vec3>& normals, double nearTolerance = 0);
 
 }  // namespace cadmedial

@@ -52,6 +52,8 @@ struct InnerOuterLabels {
   std::size_t blockedCrossings = 0;       // crossings refused by walkBlocking
   std::size_t surfaceCrossingsRefused = 0;  // crossings refused: the Voronoi edge is not wholly outside
   std::size_t blockedCrossingsToInner = 0;  // ... whose target facet stayed inner
+  std::size_t innerFacetsOutsideSurface = 0;  // not reached by the walk, relabelled outer: a Voronoi
+                                              // vertex clearly outside the sampled surface
   std::size_t outerCornerTriangles = 0;   // corner triangles hanging on an outer facet
   std::size_t outerConvexTriangles = 0;   // convex-edge (fan) triangles hanging on an outer facet
   // Independent check with the inside oracle (0 when no oracle was given):
@@ -66,11 +68,14 @@ struct InnerOuterLabels {
   double oracleSeconds = 0;
 };
 
-// cellInside: per cell id, 1 if its Voronoi vertex is inside the sampled
-// surface (classifyCellSides); empty = no such restriction on the walk.
+// cellSide: per cell id, a CellSide of its Voronoi vertex (classifyCellSides);
+// empty = no restriction on the walk and no relabelling. The walk never crosses
+// a Voronoi edge with an end inside; with params.innerNeedsInsideVertices a
+// facet it did not reach is still outer when one of its Voronoi vertices is
+// clearly outside (kCellOutside).
 InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& samples,
                                     const SelectedFacets& selected, const ForcedTriangles& forced,
                                     const MedialParams& params, const InsideOracle& oracle = {},
-                                    const std::vector<std::uint8_t>& cellInside = {});
+                                    const std::vector<std::uint8_t>& cellSide = {});
 
 }  // namespace cadmedial

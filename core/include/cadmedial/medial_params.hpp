@@ -29,6 +29,12 @@ struct MedialParams {
   // feature size, Voronoi facets straddle the surface and would otherwise
   // carry the walk into the inner axis (a whole part labelled outer).
   bool walkStaysOutside = true;
+  // After the walk, a facet it did not reach is outer anyway when one of its
+  // Voronoi vertices lies outside the sampled surface by more than
+  // nearSurfaceFraction × h (h = SampleSet::spacing): the inner medial axis
+  // has every vertex inside the solid. Needs walkStaysOutside (the sides).
+  bool innerNeedsInsideVertices = true;
+  double nearSurfaceFraction = 0.1;
   // Compute β2 (and so β1) exactly only while the 2-core left after free-face
   // collapses has at most this many polygons; otherwise β1 = β2 = -1.
   std::size_t bettiCoreLimit = 200000;

@@ -1,0 +1,65 @@
+// Every set=dev public model (../shared/models/public, skipped when absent),
+// default parameters, every solid: the DESIGN.md §6 metrics against OCCT's
+// exact geometry. Inside, coverage, convex-edge attachment and medialness must
+// meet the thresholds of the CAD_MEDIAL issue; topology and corner attachment
+// are printed (the eval table, scripts/eval_table.py --public) but not yet
+// asserted: some public parts still give extra components or loops (see
+// ARCHITECTURE.md, "Known gaps").
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <cstdio>
+
+#include "cadmedial/medial.hpp"
+// OCCT after CGAL (OCCT's Handle macro).
+#include "cadmedial/brep_io.hpp"
+#include "cadmedial/medial_evaluation.hpp"
+#include "cadmedial/sampling.hpp"
+#include "medial_mesh_conversion.hpp"
+#include "model_fixtures.hpp"
+
+namespace cadmedial {
+namespace {
+
+// Above this many samples a model is left to scripts/eval_table.py: its
+// evaluation alone takes minutes, too long for the suite.
+constexpr std::size_t kMaxSamplesInSuite = 100000;
+
+class PublicEvaluation : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(PublicEvaluation, MeetsTheGeometricThresholds) {
+  const LoadedModel model = loadModel(test::publicModelsDir() + "/" + GetParam());
+  ASSERT_FALSE(model.solids.empty());
+  for (std::size_t i = 0; i < model.solids.size(); ++i) {
+    const SolidSampling s = sampleSolid(model.solids[i]);
+    if (s.samples.size() > kMaxSamplesInSuite) {
+      std::printf("%-36s solid %zu: %zu samples, evaluation left to scripts/eval_table.py\n", GetParam().c_str(), i,
+                  s.samples.size());
+      continue;
+    }
+    const MedialResult m = computeCadMedial(s.samples);
+    const EvaluationReport r = evaluateMedial(model.solids[i], toMedialMesh(m));
+    std::printf("%-36s solid %zu: inside %.4f  medialness median %.4f%% diag  coverage %.4f  edges %.4f  "
+                "corners %d/%d  b0,b1 %lld,%lld (solid %lld,%lld)\n",
+                GetParam().c_str(), i, r.inside.share, 100 * r.medialness.median, r.coverage.share,
+                r.attachment.edgeShare, r.attachment.attachedCorners, r.attachment.corners, r.topology.beta0,
+                r.topology.beta1, r.topology.solidBeta0, r.topology.solidBeta1);
+    EXPECT_GE(r.inside.share, 0.999) << "solid " << i;
+    EXPECT_GE(r.coverage.share, 0.99) << "solid " << i;
+    EXPECT_GE(r.attachment.edgeShare, 0.99) << "solid " << i;
+    EXPECT_LE(r.medialness.median, 0.005) << "solid " << i;
+    EXPECT_GE(r.topology.beta0, 1) << "solid " << i;
+  }
+}
+
+std::string testName(const ::testing::TestParamInfo<std::string>& info) {
+  std::string name;
+  for (char c : info.param) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Dev, PublicEvaluation, ::testing::ValuesIn(test::publicModels("set=dev")), testName);
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(PublicEvaluation);
+
+}  // namespace
+}  // namespace cadmedial
