@@ -366,7 +366,8 @@ MedialComplex complexFromArrays(const py::array_t<double, py::array::c_style | p
                                 const py::array_t<double, py::array::c_style | py::array::forcecast>& radius,
                                 const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& offsets,
                                 const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& indices,
-                                const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& sheet) {
+                                const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& sheet,
+                                const std::int64_t* provenance = nullptr) {
   if (vertices.ndim() != 2 || vertices.shape(1) != 3) throw py::value_error("vertices must be an N x 3 array");
   const auto nv = static_cast<std::size_t>(vertices.shape(0));
   if (radius.ndim() != 1 || static_cast<std::size_t>(radius.shape(0)) != nv)
@@ -392,7 +393,9 @@ MedialComplex complexFromArrays(const py::array_t<double, py::array::c_style | p
     if (sheet.data()[p] < 0) throw py::value_error("negative sheet id");
     c.sheet.push_back(static_cast<Index>(sheet.data()[p]));
     sheets = std::max(sheets, static_cast<std::size_t>(sheet.data()[p]) + 1);
-    c.provenance.push_back(PolygonProvenance::DelaunayEdgeFacet);
+    const std::int64_t origin = provenance ? provenance[p] : 0;
+    if (origin < 0 || origin > 3) throw py::value_error("provenance values are 0..3");
+    c.provenance.push_back(static_cast<PolygonProvenance>(origin));
   }
   for (std::int64_t k = 0; k < ni; ++k) {
     if (ix[k] < 0 || static_cast<std::size_t>(ix[k]) >= nv) throw py::value_error("vertex index out of range");
@@ -425,23 +428,18 @@ void writeMedial(const std::string& path, const std::string& format,
 // evaluate: the DESIGN.md §6 metrics of `cadmedial eval` for one solid's axis.
 
 py::object evaluate(const std::string& source, std::size_t solid,
-                  const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
-                  const py::array_t<double, py::array::c_style | py::array::forcecast>& radius,
-                  const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& offsets,
-                  const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& indices,
-                  const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& sheet,
-                  const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& provenance,
-                  double tolerance) {
+                    const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
+                    const py::array_t<double, py::array::c_style | py::array::forcecast>& radius,
+                    const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& offsets,
+                    const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& indices,
+                    const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& sheet,
+                    const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& provenance,
+                    double tolerance) {
   if (!(tolerance > 0 && tolerance < 1))
     throw py::value_error("tolerance must be a fraction of the bounding-box diagonal in (0, 1)");
-  MedialComplex c = complexFromArrays(vertices, radius, offsets, indices, sheet);
-  if (provenance.ndim() != 1 || static_cast<std::size_t>(provenance.shape(0)) != c.sheet.size())
+  if (provenance.ndim() != 1 || provenance.shape(0) != sheet.shape(0))
     throw py::value_error("provenance must have one value per polygon");
-  for (std::size_t p = 0; p < c.provenance.size(); ++p) {
-    const std::int64_t v = provenance.data()[p];
-    if (v < 0 || v > 3) throw py::value_error("provenance values are 0..3");
-    c.provenance[p] = static_cast<PolygonProvenance>(v);
-  }
+  const MedialComplex c = complexFromArrays(vertices, radius, offsets, indices, sheet, provenance.data());
   Progress none{py::none()};
   EvaluationReport report;
   runWithoutGil(none, [&] {

@@ -48,7 +48,7 @@ def main():
     report = cadmedial.evaluate(bracket, axis)
     check(report["pass"]["all"], "evaluate: the L-bracket axis passes every exact-geometry check: "
           + "; ".join(cadmedial.evaluation_lines(report)))
-    # The same axis pushed off by 5 % of the diagonal must fail medialness and coverage.
+    # The same axis pushed off by 5 % of the diagonal must fail medialness.
     moved = copy.copy(axis)
     moved.vertices = axis.vertices + 0.05 * report["diagonal"] / np.sqrt(3.0)
     bad = cadmedial.evaluate(bracket, moved)
