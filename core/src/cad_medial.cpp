@@ -37,8 +37,17 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
   r.times.convexEdges = r.forced.convexSeconds;
   r.times.corners = r.forced.cornerSeconds;
 
+  watch.restart();
   std::vector<std::uint8_t> cellInside;
-  if (params.walkStaysOutside) cellInside = classifyCellSides(dv, samples, outwardSampleNormals(samples));
+  // No unbounded facet, no outer walk, nothing reads cellInside.
+  if (params.walkStaysOutside && selected.unboundedCount > 0) {
+    // The walk reads cellInside only on the rings of selected facets.
+    std::vector<std::uint8_t> onRing(dv.cellCount(), 0);
+    for (Index c : selected.ringCells)
+      if (c < onRing.size()) onRing[c] = 1;
+    cellInside = classifyCellSides(dv, samples, outwardSampleNormals(samples), &onRing);
+  }
+  r.times.cellSides = watch.seconds();
   r.labels = separateInnerOuter(dv, samples, selected, r.forced, params, oracle, cellInside);
   r.times.walk = r.labels.seconds;
   r.times.oracle = r.labels.oracleSeconds;

@@ -20,7 +20,11 @@ std::vector<Vec3> outwardSampleNormals(const SampleSet& samples);
 // sign((c - p_i) · n_i) (the empty ball touches the surface there); ties,
 // infinite cells, centres outside the bounding box and radii above half its
 // diagonal count as outside.
+// wanted (optional, per cell id): only cells with wanted[id] != 0 are tested,
+// the others are left 0 - the walk only looks at cells on selected facets'
+// rings, and the point-in-mesh test is the costly part.
 std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const SampleSet& samples,
-                                            const std::vector<Vec3>& normals);
+                                            const std::vector<Vec3>& normals,
+                                            const std::vector<std::uint8_t>* wanted = nullptr);
 
 }  // namespace cadmedial
