@@ -34,7 +34,6 @@ class SampleBuilder {
   // or |p - q| < radius when the others' exclusion radii are not to be honoured.
   bool isClear(const gp_Pnt& p, double radius, Index ignore = kNoIndex, bool honourExclusion = true) const {
     const double reach = honourExclusion ? std::max(radius, maxExclusion_) : radius;
-    const long r = static_cast<long>(std::ceil(reach / cell_));
     const long cx = cellOf(p.X()), cy = cellOf(p.Y()), cz = cellOf(p.Z());
     auto cellIsClear = [&](long i, long j, long k) {
       const std::vector<Entry>* cell = grid_.find(key(i, j, k));
@@ -49,9 +48,11 @@ class SampleBuilder {
     };
     // Own cell first: most rejected darts land next to a sample there.
     if (!cellIsClear(cx, cy, cz)) return false;
-    for (long i = cx - r; i <= cx + r; ++i)
-      for (long j = cy - r; j <= cy + r; ++j)
-        for (long k = cz - r; k <= cz + r; ++k)
+    // Only the cells the ball of radius `reach` overlaps (2 x 2 x 2 at most
+    // when reach <= cell / 2): fewer scattered buckets per dart.
+    for (long i = cellOf(p.X() - reach); i <= cellOf(p.X() + reach); ++i)
+      for (long j = cellOf(p.Y() - reach); j <= cellOf(p.Y() + reach); ++j)
+        for (long k = cellOf(p.Z() - reach); k <= cellOf(p.Z() + reach); ++k)
           if ((i != cx || j != cy || k != cz) && !cellIsClear(i, j, k)) return false;
     return true;
   }

@@ -108,7 +108,9 @@ SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& param
   for (double s : ctx.faceSpacing) largestSpacing = std::max(largestSpacing, s);
   for (int e = 0; e < topo.edgeCount(); ++e)
     if (!topo.edgeDegenerate[e]) largestSpacing = std::max(largestSpacing, ctx.edgeSpacing[e]);
-  SampleBuilder builder(set, largestSpacing > 0 ? largestSpacing : ctx.spacing);
+  // Cells twice that size: a dart's ball (radius 0.75 x its spacing) then
+  // overlaps at most 2 cells per axis.
+  SampleBuilder builder(set, 2.0 * (largestSpacing > 0 ? largestSpacing : ctx.spacing));
   sampleVerticesAndEdges(ctx, builder);
   const std::size_t featureSamples = set.points.size();
   placeTriplets(ctx, builder);
