@@ -16,8 +16,9 @@
 
 namespace cadmedial {
 
-// Doubles are written with 17 significant digits, so a read gives back the
-// same numbers. Throws std::invalid_argument if the mesh is inconsistent.
+// Doubles are written as the shortest text that reads back to the same
+// double (std::to_chars), so a read gives back the same numbers. Throws
+// std::invalid_argument if the mesh is inconsistent.
 void writeMedialPly(std::ostream& out, const MedialMesh& mesh);
 
 // Through writeFileAtomically (a killed run leaves no half-written file).

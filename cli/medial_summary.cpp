@@ -48,6 +48,7 @@ nlohmann::json medialSummaryJson(const SamplingReport& sampling, const MedialRes
                   {"filter", t.selection},
                   {"convex_edges", t.convexEdges},
                   {"corners", t.corners},
+                  {"cell_sides", t.cellSides},
                   {"walk", t.walk},
                   {"oracle_check", t.oracle},
                   {"complex", t.complex},

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <iostream>
 
+#include <tbb/parallel_invoke.h>
+
 #include <BRepClass3d_SolidClassifier.hxx>
 
 #include "atomic_file.hpp"
@@ -53,9 +55,12 @@ int runRunCommand(const RunCommandOptions& options) {
     t = Clock::now();
     const std::string dir = (std::filesystem::path(options.outDir) / ("solid_" + std::to_string(i))).string();
     std::filesystem::create_directories(dir);
-    writeMedialPlyFile(dir + "/medial.ply", toMedialMesh(medial));
-    writeFileAtomically(dir + "/medial.obj", [&](std::ofstream& out) { writeMedialObj(out, medial); });
-    writeFileAtomically(dir + "/medial.ma", [&](std::ofstream& out) { writeMedialMa(out, medial); });
+    // The three files are independent: format and write them side by side
+    // (each is still written to a temporary name and renamed).
+    tbb::parallel_invoke(
+        [&] { writeMedialPlyFile(dir + "/medial.ply", toMedialMesh(medial)); },
+        [&] { writeFileAtomically(dir + "/medial.obj", [&](std::ofstream& out) { writeMedialObj(out, medial); }); },
+        [&] { writeFileAtomically(dir + "/medial.ma", [&](std::ofstream& out) { writeMedialMa(out, medial); }); });
     const double secondsWrite = secondsSince(t);
 
     nlohmann::json summary = medialSummaryJson(sampled.report, medial, options.params);

@@ -37,11 +37,20 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
   r.times.convexEdges = r.forced.convexSeconds;
   r.times.corners = r.forced.cornerSeconds;
 
+  watch.restart();
   std::vector<std::uint8_t> cellSide;
-  if (params.walkStaysOutside)
-    cellSide = classifyCellSides(dv, samples, outwardSampleNormals(samples),
-                                 params.nearSurfaceFraction *
-                                     (samples.spacing > 0 ? samples.spacing : samples.bboxDiagonal() / 40));
+  // The walk (through unbounded facets) and the relabel of unreached facets
+  // read cellSide, and only on the rings of selected facets.
+  const bool walkReadsSides = params.walkStaysOutside && selected.unboundedCount > 0;
+  if (walkReadsSides || params.innerNeedsInsideVertices) {
+    std::vector<std::uint8_t> onRing(dv.cellCount(), 0);
+    for (Index c : selected.ringCells)
+      if (c < onRing.size()) onRing[c] = 1;
+    const double spacing = samples.spacing > 0 ? samples.spacing : samples.bboxDiagonal() / 40;
+    cellSide = classifyCellSides(dv, samples, outwardSampleNormals(samples), params.nearSurfaceFraction * spacing,
+                                 &onRing);
+  }
+  r.times.cellSides = watch.seconds();
   r.labels = separateInnerOuter(dv, samples, selected, r.forced, params, oracle, cellSide);
   r.times.walk = r.labels.seconds;
   r.times.oracle = r.labels.oracleSeconds;

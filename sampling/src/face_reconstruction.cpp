@@ -12,6 +12,9 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
@@ -168,9 +171,21 @@ FaceMesh reconstructFace(const SamplingContext& ctx, const SampleSet& set, int f
         if (a != b) cdt.insert_constraint(a, b);
       }
     }
-    for (Index i : interior) {
-      Cdt::Vertex_handle vh = cdt.insert(toPlane(ctx.faceSampleUv[i]));
-      if (vh->info().id == kNoIndex) vh->info().id = i;
+    // Interior samples in spatial (Hilbert) order, each located from the last
+    // one: in dart order every insertion walked across the face, which made
+    // this stage grow like n^1.5 (18 s of a 10^6-sample box). The Delaunay
+    // triangulation of points in general position does not depend on the order.
+    std::vector<K::Point_2> plane(interior.size());
+    for (std::size_t k = 0; k < interior.size(); ++k) plane[k] = toPlane(ctx.faceSampleUv[interior[k]]);
+    std::vector<std::size_t> order(interior.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    using SortTraits = CGAL::Spatial_sort_traits_adapter_2<K, CGAL::Pointer_property_map<K::Point_2>::type>;
+    CGAL::spatial_sort(order.begin(), order.end(), SortTraits(CGAL::make_property_map(plane)));
+    Cdt::Face_handle hint;
+    for (std::size_t k : order) {
+      Cdt::Vertex_handle vh = cdt.insert(plane[k], hint);
+      hint = vh->face();
+      if (vh->info().id == kNoIndex) vh->info().id = interior[k];
     }
     markDomains(cdt);
     double meshArea = 0;

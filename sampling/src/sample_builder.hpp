@@ -2,9 +2,9 @@
 // exclusion radius, and a spatial hash answers "is this spot clear?".
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include <gp_Pnt.hxx>
@@ -26,7 +26,7 @@ class SampleBuilder {
     set_.isNonConcaveCorner.push_back(0);
     exclusion_.push_back(exclusionRadius);
     maxExclusion_ = std::max(maxExclusion_, exclusionRadius);
-    grid_[key(cellOf(p.X()), cellOf(p.Y()), cellOf(p.Z()))].push_back(id);
+    grid_.bucket(key(cellOf(p.X()), cellOf(p.Y()), cellOf(p.Z()))).push_back({p.X(), p.Y(), p.Z(), exclusionRadius, id});
     return id;
   }
 
@@ -34,21 +34,26 @@ class SampleBuilder {
   // or |p - q| < radius when the others' exclusion radii are not to be honoured.
   bool isClear(const gp_Pnt& p, double radius, Index ignore = kNoIndex, bool honourExclusion = true) const {
     const double reach = honourExclusion ? std::max(radius, maxExclusion_) : radius;
-    const long r = static_cast<long>(std::ceil(reach / cell_));
     const long cx = cellOf(p.X()), cy = cellOf(p.Y()), cz = cellOf(p.Z());
-    for (long i = cx - r; i <= cx + r; ++i)
-      for (long j = cy - r; j <= cy + r; ++j)
-        for (long k = cz - r; k <= cz + r; ++k) {
-          auto it = grid_.find(key(i, j, k));
-          if (it == grid_.end()) continue;
-          for (Index q : it->second) {
-            if (q == ignore) continue;
-            const auto& c = set_.points[q];
-            const double dx = c[0] - p.X(), dy = c[1] - p.Y(), dz = c[2] - p.Z();
-            const double limit = honourExclusion ? std::max(radius, exclusion_[q]) : radius;
-            if (dx * dx + dy * dy + dz * dz < limit * limit) return false;
-          }
-        }
+    auto cellIsClear = [&](long i, long j, long k) {
+      const std::vector<Entry>* cell = grid_.find(key(i, j, k));
+      if (!cell) return true;
+      for (const Entry& q : *cell) {
+        if (q.id == ignore) continue;
+        const double dx = q.x - p.X(), dy = q.y - p.Y(), dz = q.z - p.Z();
+        const double limit = honourExclusion ? std::max(radius, q.exclusion) : radius;
+        if (dx * dx + dy * dy + dz * dz < limit * limit) return false;
+      }
+      return true;
+    };
+    // Own cell first: most rejected darts land next to a sample there.
+    if (!cellIsClear(cx, cy, cz)) return false;
+    // Only the cells the ball of radius `reach` overlaps (2 x 2 x 2 at most
+    // when reach <= cell / 2): fewer scattered buckets per dart.
+    for (long i = cellOf(p.X() - reach); i <= cellOf(p.X() + reach); ++i)
+      for (long j = cellOf(p.Y() - reach); j <= cellOf(p.Y() + reach); ++j)
+        for (long k = cellOf(p.Z() - reach); k <= cellOf(p.Z() + reach); ++k)
+          if ((i != cx || j != cy || k != cz) && !cellIsClear(i, j, k)) return false;
     return true;
   }
 
@@ -56,6 +61,9 @@ class SampleBuilder {
   void setExclusion(Index i, double r) {
     exclusion_[i] = r;
     maxExclusion_ = std::max(maxExclusion_, r);
+    const auto& c = set_.points[i];
+    for (Entry& q : grid_.bucket(key(cellOf(c[0]), cellOf(c[1]), cellOf(c[2]))))
+      if (q.id == i) q.exclusion = r;
   }
   SampleSet& set() { return set_; }
 
@@ -70,7 +78,64 @@ class SampleBuilder {
   double cell_;
   std::vector<double> exclusion_;
   double maxExclusion_ = 0;
-  std::unordered_map<std::uint64_t, std::vector<Index>> grid_;
+  // A sample as the grid keeps it: position and exclusion next to the id, so a
+  // query reads one contiguous bucket instead of chasing ids into the
+  // SampleSet (cache misses were the cost once cells were small).
+  struct Entry {
+    double x, y, z, exclusion;
+    Index id;
+  };
+  // Cell key -> samples. Open addressing with linear probing: the dart
+  // loop does ~27 lookups per dart, and std::unordered_map's prime modulo and
+  // node chasing made those lookups most of the sampling time.
+  class CellTable {
+   public:
+    const std::vector<Entry>* find(std::uint64_t k) const {
+      if (keys_.empty()) return nullptr;
+      for (std::size_t s = slot(k);; s = (s + 1) & mask_) {
+        if (keys_[s] == k) return &cells_[index_[s]];
+        if (keys_[s] == kEmpty) return nullptr;
+      }
+    }
+    std::vector<Entry>& bucket(std::uint64_t k) {
+      if (2 * (cells_.size() + 1) > keys_.size()) grow();
+      std::size_t s = slot(k);
+      for (; keys_[s] != kEmpty; s = (s + 1) & mask_)
+        if (keys_[s] == k) return cells_[index_[s]];
+      keys_[s] = k;
+      index_[s] = static_cast<Index>(cells_.size());
+      cells_.emplace_back();
+      return cells_.back();
+    }
+
+   private:
+    static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};  // keys use 63 bits
+    std::size_t slot(std::uint64_t k) const { return static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> shift_); }
+    void grow() {
+      const std::size_t size = keys_.empty() ? 1024 : 2 * keys_.size();
+      int bits = 0;
+      while ((std::size_t{1} << bits) < size) ++bits;
+      shift_ = 64 - bits;
+      mask_ = size - 1;
+      std::vector<std::uint64_t> oldKeys(size, kEmpty);
+      oldKeys.swap(keys_);
+      std::vector<Index> oldIndex(size, 0);
+      oldIndex.swap(index_);
+      for (std::size_t i = 0; i < oldKeys.size(); ++i) {
+        if (oldKeys[i] == kEmpty) continue;
+        std::size_t s = slot(oldKeys[i]);
+        while (keys_[s] != kEmpty) s = (s + 1) & mask_;
+        keys_[s] = oldKeys[i];
+        index_[s] = oldIndex[i];
+      }
+    }
+    std::vector<std::uint64_t> keys_;
+    std::vector<Index> index_;
+    std::vector<std::vector<Entry>> cells_;
+    std::size_t mask_ = 0;
+    int shift_ = 64;
+  };
+  CellTable grid_;
 };
 
 }  // namespace cadmedial

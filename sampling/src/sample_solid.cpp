@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -98,7 +99,18 @@ SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& param
   set.bboxMax = {x1, y1, z1};
 
   computeSpacings(ctx);
-  SampleBuilder builder(set, ctx.spacing);
+  // The builder's hash cell follows the largest spacing actually used, not
+  // the global target: every exclusion radius is at most ~that, and on thin
+  // walls (face spacing 0.4 x thickness << h) cells of size h held hundreds
+  // of samples each, which made dart throwing quadratic-like. isClear is
+  // exact for any cell size, so the samples do not change.
+  double largestSpacing = 0;
+  for (double s : ctx.faceSpacing) largestSpacing = std::max(largestSpacing, s);
+  for (int e = 0; e < topo.edgeCount(); ++e)
+    if (!topo.edgeDegenerate[e]) largestSpacing = std::max(largestSpacing, ctx.edgeSpacing[e]);
+  // Cells twice that size: a dart's ball (radius 0.75 x its spacing) then
+  // overlaps at most 2 cells per axis.
+  SampleBuilder builder(set, 2.0 * (largestSpacing > 0 ? largestSpacing : ctx.spacing));
   sampleVerticesAndEdges(ctx, builder);
   const std::size_t featureSamples = set.points.size();
   placeTriplets(ctx, builder);

@@ -30,7 +30,11 @@ enum CellSide : std::uint8_t {
 // nearTolerance: outside centres closer than this to the reconstruction are
 // kCellNearOutside (inner Voronoi vertices near curved convex faces can lie
 // between the chords and the true surface).
+// wanted (optional, per cell id): only cells with wanted[id] != 0 are tested,
+// the others are left kCellOutside - the walk and the relabel only look at
+// cells on selected facets' rings, and the point-in-mesh test is the costly part.
 std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const SampleSet& samples,
-                                            const std::vector<Vec3>& normals, double nearTolerance = 0);
+                                            const std::vector<Vec3>& normals, double nearTolerance = 0,
+                                            const std::vector<std::uint8_t>* wanted = nullptr);
 
 }  // namespace cadmedial

@@ -57,6 +57,7 @@ struct MedialTimes {  // seconds
   double selection = 0;
   double convexEdges = 0;
   double corners = 0;
+  double cellSides = 0;    // which side of the reconstructed surface each used Voronoi vertex is on
   double walk = 0;
   double oracle = 0;       // not part of the pipeline proper
   double complex = 0;
