@@ -18,6 +18,8 @@
 #include "medial_ply_io.hpp"
 #include "medial_summary.hpp"
 #include "medial_writers.hpp"
+#include "point_input.hpp"
+#include "run_points_command.hpp"
 #include "report_json.hpp"
 
 namespace cadmedial {
@@ -28,6 +30,7 @@ double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(
 }  // namespace
 
 int runRunCommand(const RunCommandOptions& options) {
+  if (isPointInputPath(options.model)) return runPointMedialCommand(options);
   auto t = Clock::now();
   const LoadedModel model = loadModel(options.model);
   const double secondsRead = secondsSince(t);
