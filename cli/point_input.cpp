@@ -87,7 +87,7 @@ void readPolygonSoup(const std::string& path, PointInput& in) {
   } catch (const std::exception& e) {
     fail(path, std::string("not a readable ") + in.format + " file (" + e.what() + ")");
   }
-  if (!ok) fail(path, "not a readable " + in.format + " file");
+  if (!ok || points.empty()) fail(path, "not a readable " + in.format + " file (no points found)");
   // OBJ/OFF/PLY exporters often repeat a vertex per face; welding equal
   // points keeps a closed mesh closed (the samples are the distinct points).
   if (!polygons.empty()) {
