@@ -11,6 +11,10 @@ Headless use (freecadcmd, or plain python3 after plugin/install.sh)::
     results = cadmedial.compute(doc.Box.Shape)
     medial = cadmedial.add_to_document(doc, doc.Box)   # parametric objects
 
+    # point clouds and meshes (MEDIAL, seed 000): arrays, files, Points/Mesh objects
+    axis = cadmedial.compute_points("scan.xyz")[0]       # whole axis
+    axis = cadmedial.compute("part.stl")[0]              # closed mesh: inner axis
+
 ``compute`` and ``sample`` need no FreeCAD; ``add_to_document`` and the
 objects in ``cadmedial.document`` do.
 """
@@ -21,8 +25,10 @@ from .api import (
     MedialAxisResult,
     SampleResult,
     compute,
+    compute_points,
     estimate_samples,
     inspect,
+    point_source,
     sample,
     to_source,
 )
@@ -36,8 +42,10 @@ __all__ = [
     "SampleResult",
     "add_to_document",
     "compute",
+    "compute_points",
     "estimate_samples",
     "inspect",
+    "point_source",
     "sample",
     "sync_sheets",
     "to_source",
