@@ -54,6 +54,32 @@ def measure(exe, model, outdir):
     return ev, su
 
 
+def stats(name, h, algo, ev, su):
+    a = ev["attachment"]
+    return {"model": name, "h": h, "algo": algo, "edges": a["edge_share"], "convex": a["convex_edges"],
+            "corners": a["attached_corners"], "corners_total": a["corners"],
+            "median": ev["medialness"]["median"], "cover": ev["coverage"]["share"],
+            "seconds": su["seconds"]["medial_total"],
+            "topology": ev["topology"]["matches"]}
+
+
+def summary_lines(all_stats):
+    out = ["", "## Summary (all models and spacings above)", "",
+           "| algorithm | runs | mean convex-edge attachment % (models with convex edges) | corners attached | "
+           "median \\|d−r\\| % diag (mean) | coverage % (min) | topology matches | medial seconds (sum) |",
+           "|---|---|---|---|---|---|---|---|"]
+    for algo in ("CAD_MEDIAL", "MEDIAL", "MEDIAL 0.1 % noise"):
+        rs = [r for r in all_stats if r["algo"] == algo]
+        if not rs:
+            continue
+        edged = [r["edges"] for r in rs if r["convex"] > 0]
+        out.append(f"| {algo} | {len(rs)} | {100 * sum(edged) / max(1, len(edged)):.1f} | "
+                   f"{sum(r['corners'] for r in rs)}/{sum(r['corners_total'] for r in rs)} | "
+                   f"{100 * sum(r['median'] for r in rs) / len(rs):.3f} | {100 * min(r['cover'] for r in rs):.2f} | "
+                   f"{sum(r['topology'] for r in rs)}/{len(rs)} | {sum(r['seconds'] for r in rs):.2f} |")
+    return out
+
+
 def row(name, h, algo, ev, su):
     m, a, t = ev["medialness"], ev["attachment"], ev["topology"]
     fails = [k for k, v in ev["pass"].items() if k != "all" and not v]
@@ -72,6 +98,7 @@ def main():
     args = ap.parse_args()
     exe = pathlib.Path(args.build) / "cli" / "cadmedial"
     rows = []
+    all_stats = []
     with tempfile.TemporaryDirectory() as tmp:
         tmp = pathlib.Path(tmp)
         for name in args.models.split(","):
@@ -89,6 +116,7 @@ def main():
                 for algo, out in (("CAD_MEDIAL", cad), ("MEDIAL", med), ("MEDIAL 0.1 % noise", noisy)):
                     ev, su = measure(exe, model, out)
                     rows.append(row(name, h, algo, ev, su))
+                    all_stats.append(stats(name, h, algo, ev, su))
                     print(rows[-1], flush=True)
     header = [
         "# MEDIAL vs. CAD_MEDIAL on the bundled models",
@@ -104,7 +132,7 @@ def main():
         "| model | h | samples | algorithm | inside % | \\|d−r\\| med / p90 % | 2-touch % | cover % | edges % | corners | β0,β1 | s | verdict |",
         "|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
-    pathlib.Path(args.out).write_text("\n".join(header + rows) + "\n")
+    pathlib.Path(args.out).write_text("\n".join(header + rows + summary_lines(all_stats)) + "\n")
     print(f"wrote {args.out}")
 
 

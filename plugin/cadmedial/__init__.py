@@ -55,7 +55,7 @@ __all__ = [
 __version__ = "0.1.0"
 
 
-def add_to_document(doc, source, spacing=0.0, theta=5.0, rho=8.0, **options):
+def add_to_document(doc, source, spacing=0.0, theta=None, rho=8.0, **options):
     """Parametric MedialAxis objects for every solid of `source` (a document
     object with a Shape); returns the list of created objects. See
     cadmedial.document.add_to_document."""
