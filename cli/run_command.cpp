@@ -14,10 +14,8 @@
 #include "cadmedial/brep_io.hpp"
 #include "cadmedial/errors.hpp"
 #include "cadmedial/sampling.hpp"
-#include "medial_mesh_conversion.hpp"
-#include "medial_ply_io.hpp"
+#include "medial_outputs.hpp"
 #include "medial_summary.hpp"
-#include "medial_writers.hpp"
 #include "point_input.hpp"
 #include "run_points_command.hpp"
 #include "report_json.hpp"
@@ -56,9 +54,7 @@ int runRunCommand(const RunCommandOptions& options) {
     t = Clock::now();
     const std::string dir = (std::filesystem::path(options.outDir) / ("solid_" + std::to_string(i))).string();
     std::filesystem::create_directories(dir);
-    writeMedialPlyFile(dir + "/medial.ply", toMedialMesh(medial));
-    writeFileAtomically(dir + "/medial.obj", [&](std::ofstream& out) { writeMedialObj(out, medial); });
-    writeFileAtomically(dir + "/medial.ma", [&](std::ofstream& out) { writeMedialMa(out, medial); });
+    writeMedialFiles(dir, medial);
     const double secondsWrite = secondsSince(t);
 
     nlohmann::json summary = medialSummaryJson(sampled.report, medial, options.params);

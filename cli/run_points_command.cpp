@@ -9,10 +9,8 @@
 
 #include "atomic_file.hpp"
 #include "cadmedial/errors.hpp"
-#include "medial_mesh_conversion.hpp"
-#include "medial_ply_io.hpp"
+#include "medial_outputs.hpp"
 #include "medial_summary.hpp"
-#include "medial_writers.hpp"
 #include "point_input.hpp"
 
 namespace cadmedial {
@@ -36,9 +34,7 @@ int runPointMedialCommand(const RunCommandOptions& options) {
   t = Clock::now();
   const std::string dir = (std::filesystem::path(options.outDir) / "solid_0").string();
   std::filesystem::create_directories(dir);
-  writeMedialPlyFile(dir + "/medial.ply", toMedialMesh(medial));
-  writeFileAtomically(dir + "/medial.obj", [&](std::ofstream& out) { writeMedialObj(out, medial); });
-  writeFileAtomically(dir + "/medial.ma", [&](std::ofstream& out) { writeMedialMa(out, medial); });
+  writeMedialFiles(dir, medial);
   const double secondsWrite = secondsSince(t);
 
   nlohmann::json summary = pointMedialSummaryJson(input, medial, params);

@@ -1,0 +1,17 @@
+// CGAL (core) headers before OCCT's (medial_ply_io pulls in sampling/).
+#include "medial_outputs.hpp"
+
+#include "atomic_file.hpp"
+#include "medial_mesh_conversion.hpp"
+#include "medial_ply_io.hpp"
+#include "medial_writers.hpp"
+
+namespace cadmedial {
+
+void writeMedialFiles(const std::string& dir, const MedialComplex& medial) {
+  writeMedialPlyFile(dir + "/medial.ply", toMedialMesh(medial));
+  writeFileAtomically(dir + "/medial.obj", [&](std::ofstream& out) { writeMedialObj(out, medial); });
+  writeFileAtomically(dir + "/medial.ma", [&](std::ofstream& out) { writeMedialMa(out, medial); });
+}
+
+}  // namespace cadmedial
