@@ -30,7 +30,17 @@ double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(
 int runRunCommand(const RunCommandOptions& options) {
   if (isPointInputPath(options.model)) return runPointMedialCommand(options);
   auto t = Clock::now();
-  const LoadedModel model = loadModel(options.model);
+  LoadedModel model;
+  try {
+    model = loadModel(options.model);
+  } catch (const InputError& e) {
+    // `run` also takes point clouds and meshes: say so where the B-rep reader
+    // lists only its own extensions.
+    std::string message = e.what();
+    if (message.find("unknown extension") != std::string::npos)
+      message.insert(message.rfind(')'), ", or a point cloud / mesh: .xyz .pts .ply .stl .obj .off");
+    throw InputError(e.code(), message);
+  }
   const double secondsRead = secondsSince(t);
   for (const std::string& w : model.warnings) std::cerr << "warning: " << options.model << ": " << w << "\n";
   std::filesystem::create_directories(options.outDir);

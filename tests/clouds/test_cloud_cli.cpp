@@ -201,6 +201,10 @@ TEST_F(CloudCli, BadFilesAreOneLineErrorsWithCode3AndNoOutput) {
     EXPECT_EQ(err.rfind("error: ", 0), 0u) << name << ": " << err;
     EXPECT_FALSE(fs::exists(dir_ / "out" / "solid_0" / "summary.json")) << name;
   }
+  // An unknown extension: the message lists the point formats too.
+  std::string err;
+  EXPECT_EQ(run(write("notes.md", "hello\n"), err), kExitUnreadableInput);
+  EXPECT_NE(err.find(".xyz .pts .ply .stl .obj .off"), std::string::npos) << err;
 }
 
 }  // namespace
