@@ -24,12 +24,16 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
 
   RunCommandOptions run;
-  CLI::App* runCmd = app.add_subcommand("run", "Compute the inner medial axis (CAD_MEDIAL) of every solid");
-  runCmd->add_option("model", run.model, "STEP/IGES/BREP file")->required();
+  CLI::App* runCmd = app.add_subcommand(
+      "run", "Compute the inner medial axis (CAD_MEDIAL) of every solid, or MEDIAL on a point cloud / mesh");
+  runCmd->add_option("model", run.model,
+                     "STEP/IGES/BREP file, point cloud (.xyz .pts .ply) or triangle mesh (.stl .obj .off .ply)")
+      ->required();
   runCmd->add_option("-o,--output", run.outDir, "Output directory")->required();
   runCmd->add_option("--spacing", run.spacing, "Target sample spacing h in model units (default: diagonal/40)")
       ->check(CLI::PositiveNumber);
-  runCmd->add_option("--theta", run.params.thetaDeg, "Angle condition threshold in degrees (default 5)")
+  runCmd->add_option("--theta", run.params.thetaDeg,
+                     "Angle condition threshold in degrees (default 5; 22.5 = pi/8 for point clouds and meshes)")
       ->check(CLI::Range(0.0, 89.0));
   runCmd->add_option("--rho", run.params.rho, "Ratio condition threshold (default 8)")->check(CLI::PositiveNumber);
   bool noOracle = false;
@@ -84,6 +88,7 @@ int main(int argc, char** argv) {
     }
     if (*runCmd) {
       run.checkWithOracle = !noOracle;
+      run.thetaGiven = runCmd->get_option("--theta")->count() > 0;
       return runRunCommand(run);
     }
     if (*batchCmd) {

@@ -4,11 +4,26 @@
 
 namespace cadmedial {
 
+namespace {
+
+nlohmann::json topologyJson(const MedialResult& m) {
+  return {{"euler", m.topology.euler}, {"beta0", m.topology.beta0}, {"beta1", m.topology.beta1},
+          {"beta2", m.topology.beta2}};
+}
+
+nlohmann::json parametersJson(const MedialParams& params) {
+  return {{"theta_deg", params.thetaDeg}, {"rho", params.rho}};
+}
+
+}  // namespace
+
 nlohmann::json medialSummaryJson(const SamplingReport& sampling, const MedialResult& m, const MedialParams& params) {
   const MedialCounts& c = m.counts;
   const MedialTimes& t = m.times;
   nlohmann::json j;
-  j["parameters"] = {{"theta_deg", params.thetaDeg}, {"rho", params.rho}};
+  j["algorithm"] = "CAD_MEDIAL";
+  j["axis"] = "inner";
+  j["parameters"] = parametersJson(params);
   j["counts"] = {{"samples", c.samples},
                  {"duplicate_samples", c.duplicateSamples},
                  {"delaunay_cells", c.delaunayCells},
@@ -25,8 +40,7 @@ nlohmann::json medialSummaryJson(const SamplingReport& sampling, const MedialRes
                  {"medial_vertices", m.vertices.size()},
                  {"medial_polygons", m.polygonCount()},
                  {"sheets", c.sheets}};
-  j["topology"] = {{"euler", m.topology.euler}, {"beta0", m.topology.beta0}, {"beta1", m.topology.beta1},
-                   {"beta2", m.topology.beta2}};
+  j["topology"] = topologyJson(m);
   j["diagnostics"] = {{"triplets_not_delaunay", c.tripletsNotDelaunay},
                       {"triplets_on_hull", c.tripletsOnHull},
                       {"convex_gaps_without_fill", m.forced.gapsWithoutFill},
@@ -56,6 +70,51 @@ nlohmann::json medialSummaryJson(const SamplingReport& sampling, const MedialRes
                   {"topology", t.topology},
                   {"medial_total", t.total}};
   j["sampling"] = toJson(sampling);
+  return j;
+}
+
+nlohmann::json pointMedialSummaryJson(const PointInput& input, const PointMedialResult& m, const MedialParams& params) {
+  const MedialCounts& c = m.counts;
+  const PointMedialInfo& info = m.cloud;
+  const MedialTimes& t = m.times;
+  nlohmann::json j;
+  j["algorithm"] = "MEDIAL";
+  j["axis"] = info.part == MedialAxisPart::Inner ? "inner" : "whole";
+  j["axis_note"] = info.axisNote;
+  j["parameters"] = parametersJson(params);
+  j["input"] = {{"format", input.format}, {"points", input.points.size()}, {"mesh_triangles", input.triangles.size()}};
+  if (info.meshGiven)
+    j["input"]["mesh"] = {{"closed_oriented", info.mesh.closedManifold()},
+                          {"border_edges", info.mesh.boundaryEdges},
+                          {"non_manifold_edges", info.mesh.nonManifoldEdges},
+                          {"misoriented_edges", info.mesh.misorientedEdges},
+                          {"non_manifold_vertices", info.mesh.nonManifoldVertices},
+                          {"components", info.mesh.components},
+                          {"enclosed_volume", info.mesh.enclosedVolume}};
+  j["counts"] = {{"samples", c.samples},
+                 {"duplicate_samples", c.duplicateSamples},
+                 {"delaunay_cells", c.delaunayCells},
+                 {"delaunay_edges", c.delaunayEdges},
+                 {"hull_samples", info.unboundedCells},
+                 {"umbrella_triangles", info.umbrellaTriangles},
+                 {"selected_facets", c.selectedFacets},
+                 {"unbounded_facets_dropped", info.unboundedFacetsDropped},
+                 {"outside_facets_dropped", info.outsideFacetsDropped},
+                 {"output_facets", c.innerFacets},
+                 {"medial_vertices", m.vertices.size()},
+                 {"medial_polygons", m.polygonCount()},
+                 {"sheets", c.sheets}};
+  j["topology"] = topologyJson(m);
+  j["diagnostics"] = {{"empty_umbrellas", info.emptyUmbrellas},
+                      {"zero_pole_vectors", info.zeroPoleVectors},
+                      {"samples_without_umbrella", c.samplesWithoutUmbrella},
+                      {"degenerate_umbrella_triangles", c.degenerateUmbrellaTriangles}};
+  j["seconds"] = {{"delaunay", t.delaunay},     {"voronoi", t.voronoi},
+                  {"poles", info.polesSeconds}, {"tangent_umbrellas", info.tangentUmbrellaSeconds},
+                  {"umbrellas", t.umbrellas},   {"filter", t.selection},
+                  {"inside", info.insideSeconds}, {"complex", t.complex},
+                  {"sheets", t.sheets},         {"topology", t.topology},
+                  {"medial_total", t.total}};
   return j;
 }
 

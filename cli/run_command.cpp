@@ -16,10 +16,10 @@
 #include "cadmedial/brep_io.hpp"
 #include "cadmedial/errors.hpp"
 #include "cadmedial/sampling.hpp"
-#include "medial_mesh_conversion.hpp"
-#include "medial_ply_io.hpp"
+#include "medial_outputs.hpp"
 #include "medial_summary.hpp"
-#include "medial_writers.hpp"
+#include "point_input.hpp"
+#include "run_points_command.hpp"
 #include "report_json.hpp"
 
 namespace cadmedial {
@@ -30,8 +30,19 @@ double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(
 }  // namespace
 
 int runRunCommand(const RunCommandOptions& options) {
+  if (isPointInputPath(options.model)) return runPointMedialCommand(options);
   auto t = Clock::now();
-  const LoadedModel model = loadModel(options.model);
+  LoadedModel model;
+  try {
+    model = loadModel(options.model);
+  } catch (const InputError& e) {
+    // `run` also takes point clouds and meshes: say so where the B-rep reader
+    // lists only its own extensions.
+    std::string message = e.what();
+    if (message.find("unknown extension") != std::string::npos)
+      message.insert(message.rfind(')'), ", or a point cloud / mesh: .xyz .pts .ply .stl .obj .off");
+    throw InputError(e.code(), message);
+  }
   const double secondsRead = secondsSince(t);
   for (const std::string& w : model.warnings) std::cerr << "warning: " << options.model << ": " << w << "\n";
   std::filesystem::create_directories(options.outDir);
@@ -55,12 +66,7 @@ int runRunCommand(const RunCommandOptions& options) {
     t = Clock::now();
     const std::string dir = (std::filesystem::path(options.outDir) / ("solid_" + std::to_string(i))).string();
     std::filesystem::create_directories(dir);
-    // The three files are independent: format and write them side by side
-    // (each is still written to a temporary name and renamed).
-    tbb::parallel_invoke(
-        [&] { writeMedialPlyFile(dir + "/medial.ply", toMedialMesh(medial)); },
-        [&] { writeFileAtomically(dir + "/medial.obj", [&](std::ofstream& out) { writeMedialObj(out, medial); }); },
-        [&] { writeFileAtomically(dir + "/medial.ma", [&](std::ofstream& out) { writeMedialMa(out, medial); }); });
+    writeMedialFiles(dir, medial);
     const double secondsWrite = secondsSince(t);
 
     nlohmann::json summary = medialSummaryJson(sampled.report, medial, options.params);

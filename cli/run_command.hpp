@@ -12,10 +12,12 @@ struct RunCommandOptions {
   double spacing = 0;
   MedialParams params = MedialParams::cad();
   bool checkWithOracle = true;  // count walk-vs-exact-classifier disagreements
+  bool thetaGiven = false;      // else point clouds / meshes use MedialParams::pointCloud()'s θ
 };
 
 // `cadmedial run`: per solid, medial.ply, medial.obj, medial.ma and
 // summary.json under OUTDIR/solid_<i>/, and a summary line on stdout.
+// Point clouds and meshes (point_input.hpp) go to runPointMedialCommand.
 int runRunCommand(const RunCommandOptions& options);
 
 }  // namespace cadmedial

@@ -37,24 +37,26 @@ TriangleData triangleData(const Vec3& a, const Vec3& b, const Vec3& c) {
 }  // namespace
 
 UmbrellaData computeUmbrellaData(const SampleSet& samples) {
-  const std::size_t n = samples.size();
-  const std::vector<Index>* offsets = &samples.umbrellaOffsets;
-  const std::vector<Index>* members = &samples.umbrellaTriangles;
+  if (samples.umbrellaOffsets.size() == samples.size() + 1)
+    return umbrellaDataFromTriangles(samples.points, samples.triangles, samples.umbrellaOffsets,
+                                     samples.umbrellaTriangles);
   SampleSet rebuilt;
-  if (samples.umbrellaOffsets.size() != n + 1) {
-    rebuilt.points = samples.points;
-    rebuilt.triangles = samples.triangles;
-    rebuilt.buildUmbrellas();
-    offsets = &rebuilt.umbrellaOffsets;
-    members = &rebuilt.umbrellaTriangles;
-  }
+  rebuilt.points = samples.points;
+  rebuilt.triangles = samples.triangles;
+  rebuilt.buildUmbrellas();
+  return umbrellaDataFromTriangles(samples.points, samples.triangles, rebuilt.umbrellaOffsets,
+                                   rebuilt.umbrellaTriangles);
+}
 
-  const std::size_t tcount = samples.triangles.size();
+UmbrellaData umbrellaDataFromTriangles(const std::vector<Vec3>& points, const std::vector<std::array<Index, 3>>& triangles,
+                                       const std::vector<Index>& offsets, const std::vector<Index>& members) {
+  const std::size_t n = offsets.empty() ? 0 : offsets.size() - 1;
+  const std::size_t tcount = triangles.size();
   std::vector<TriangleData> tri(tcount);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tcount, 8192), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t t = r.begin(); t != r.end(); ++t) {
-      const auto& v = samples.triangles[t];
-      tri[t] = triangleData(samples.points[v[0]], samples.points[v[1]], samples.points[v[2]]);
+      const auto& v = triangles[t];
+      tri[t] = triangleData(points[v[0]], points[v[1]], points[v[2]]);
     }
   });
 
@@ -65,8 +67,8 @@ UmbrellaData computeUmbrellaData(const SampleSet& samples) {
   for (std::size_t i = 0; i < n; ++i) {
     Index count = 0;
     double maxR = 0;
-    for (Index k = (*offsets)[i]; k < (*offsets)[i + 1]; ++k) {
-      const TriangleData& t = tri[(*members)[k]];
+    for (Index k = offsets[i]; k < offsets[i + 1]; ++k) {
+      const TriangleData& t = tri[members[k]];
       if (!t.valid) continue;
       ++count;
       maxR = std::max(maxR, t.circumradius);
@@ -78,8 +80,8 @@ UmbrellaData computeUmbrellaData(const SampleSet& samples) {
   u.normals.resize(u.offsets[n]);
   for (std::size_t i = 0; i < n; ++i) {
     Index out = u.offsets[i];
-    for (Index k = (*offsets)[i]; k < (*offsets)[i + 1]; ++k) {
-      const TriangleData& t = tri[(*members)[k]];
+    for (Index k = offsets[i]; k < offsets[i + 1]; ++k) {
+      const TriangleData& t = tri[members[k]];
       if (t.valid) u.normals[out++] = t.normal;
     }
   }

@@ -13,6 +13,10 @@ Headless use (freecadcmd, or plain python3 after plugin/install.sh)::
     results = cadmedial.compute(doc.Box.Shape)
     medial = cadmedial.add_to_document(doc, doc.Box)   # parametric objects
 
+    # point clouds and meshes (MEDIAL, seed 000): arrays, files, Points/Mesh objects
+    axis = cadmedial.compute_points("scan.xyz")[0]       # whole axis
+    axis = cadmedial.compute("part.stl")[0]              # closed mesh: inner axis
+
 ``compute`` and ``sample`` need no FreeCAD; ``add_to_document`` and the
 objects in ``cadmedial.document`` do.
 """
@@ -23,10 +27,12 @@ from .api import (
     MedialAxisResult,
     SampleResult,
     compute,
+    compute_points,
     estimate_samples,
     evaluate,
     evaluation_lines,
     inspect,
+    point_source,
     sample,
     to_source,
 )
@@ -40,10 +46,12 @@ __all__ = [
     "SampleResult",
     "add_to_document",
     "compute",
+    "compute_points",
     "estimate_samples",
     "evaluate",
     "evaluation_lines",
     "inspect",
+    "point_source",
     "sample",
     "sync_sheets",
     "to_source",
@@ -53,7 +61,7 @@ __all__ = [
 __version__ = "0.1.0"
 
 
-def add_to_document(doc, source, spacing=0.0, theta=5.0, rho=8.0, **options):
+def add_to_document(doc, source, spacing=0.0, theta=None, rho=8.0, **options):
     """Parametric MedialAxis objects for every solid of `source` (a document
     object with a Shape); returns the list of created objects. See
     cadmedial.document.add_to_document."""

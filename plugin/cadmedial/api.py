@@ -274,12 +274,78 @@ def _check_params(spacing, theta, rho):
             raise ValueError(f"{name} must be a finite number, got {value!r}")
 
 
-def compute(source, spacing=0.0, theta=5.0, rho=8.0, pair_mesh=False, check_inside=True, progress=None, cancel=None):
+#: File name endings that `cadmedial run` and compute() treat as point clouds / meshes.
+POINT_EXTENSIONS = (".xyz", ".pts", ".ply", ".stl", ".obj", ".off")
+#: MEDIAL's Angle threshold for point clouds (pi/8, seed 000); CAD_MEDIAL uses 5 degrees.
+POINT_CLOUD_THETA = 22.5
+
+
+def _vectors_to_array(vectors):
+    return np.array([[v.x, v.y, v.z] for v in vectors], dtype=np.float64).reshape(-1, 3)
+
+
+def point_source(source):
+    """(points N x 3, triangles M x 3 or None) if `source` is a point cloud or
+    a mesh, else None. Accepts an N x 3 array, a (points, triangles) pair, a
+    .xyz/.pts/.ply/.stl/.obj/.off file name, a FreeCAD Points or Mesh object
+    (Points::Feature, Mesh::Feature: global coordinates, their Placement
+    applied) or a Points.Points / Mesh.Mesh kernel object."""
+    if isinstance(source, np.ndarray):
+        return np.asarray(source, dtype=np.float64).reshape(-1, 3), None
+    if isinstance(source, tuple) and len(source) == 2:
+        points, triangles = source
+        return (np.asarray(points, dtype=np.float64).reshape(-1, 3),
+                None if triangles is None else np.asarray(triangles, dtype=np.int64).reshape(-1, 3))
+    if isinstance(source, (str, os.PathLike)):
+        path = os.fspath(source)
+        if "\n" not in path and path.lower().endswith(POINT_EXTENSIONS):
+            data = _native.read_points(path)
+            triangles = data["triangles"]
+            return data["points"], (triangles if triangles.shape[0] else None)
+        return None
+    if hasattr(source, "TypeId") and hasattr(source, "Document"):  # a FreeCAD document object
+        for name in ("Mesh", "Points"):
+            if name in getattr(source, "PropertiesList", ()) and "Shape" not in source.PropertiesList:
+                kernel = getattr(source, name).copy()
+                placement = getattr(source, "Placement", None)
+                if placement is not None and hasattr(kernel, "Placement"):
+                    kernel.Placement = placement  # the object's placement: global coordinates
+                return point_source(kernel)
+        return None
+    if hasattr(source, "Topology") and hasattr(source, "Facets"):  # Mesh.Mesh
+        vertices, facets = source.Topology
+        return _vectors_to_array(vertices), np.asarray(facets, dtype=np.int64).reshape(-1, 3)
+    if hasattr(source, "Points") and hasattr(source, "addPoints"):  # Points.Points
+        return _vectors_to_array(source.Points), None
+    return None
+
+
+def compute_points(source, theta=POINT_CLOUD_THETA, rho=8.0, progress=None, cancel=None):
+    """MEDIAL (seed 000) on points alone; one MedialAxisResult in a list.
+
+    source: see point_source(). A bare point cloud gives the whole medial
+    axis, inner and outer (result.summary["axis"] == "whole"); a closed,
+    consistently oriented mesh gives its inner axis ("inner");
+    result.summary["axis_note"] says why.
+    """
+    _check_params(0.0, theta, rho)
+    data = point_source(source)
+    if data is None:
+        raise TypeError(f"cannot use a {type(source).__name__} as a point source: expected an N x 3 array, "
+                        "(points, triangles), a point/mesh file or a FreeCAD Points/Mesh object")
+    points, triangles = data
+    raw = _native.compute_points(points, triangles, float(theta), float(rho), _with_cancel(progress, cancel))
+    return [MedialAxisResult(raw, theta, rho)]
+
+
+def compute(source, spacing=0.0, theta=None, rho=8.0, pair_mesh=False, check_inside=True, progress=None, cancel=None):
     """Inner medial axis of every closed solid of `source`; one MedialAxisResult per solid.
+    Point clouds and meshes (see point_source) go to compute_points (MEDIAL).
 
     source: FreeCAD object / Part.Shape / file name / BREP text.
     spacing: sample spacing in model units (0 = bounding-box diagonal / 40).
-    theta (degrees), rho: the Angle and Ratio conditions of CAD_MEDIAL.
+    theta (degrees), rho: the Angle and Ratio conditions of CAD_MEDIAL
+      (theta None: 5 for solids, 22.5 for point clouds and meshes).
     pair_mesh: not implemented yet (raises NotImplementedError if True).
     check_inside: count disagreements of the inner/outer walk with OCCT's exact
       classifier (summary["diagnostics"]["walk_oracle_disagreements"]).
@@ -293,6 +359,9 @@ def compute(source, spacing=0.0, theta=5.0, rho=8.0, pair_mesh=False, check_insi
     """
     if pair_mesh:
         raise NotImplementedError(PAIR_MESH_MESSAGE)
+    if not (hasattr(source, "exportBrepToString") or isinstance(source, bytes)) and point_source(source) is not None:
+        return compute_points(source, POINT_CLOUD_THETA if theta is None else theta, rho, progress, cancel)
+    theta = 5.0 if theta is None else theta
     _check_params(spacing, theta, rho)
     raw = _native.compute(
         to_source(source), float(spacing), float(theta), float(rho), bool(check_inside), _with_cancel(progress, cancel)

@@ -14,6 +14,11 @@ MedialSheet (Mesh::FeaturePython), children of a MedialAxis
     ("other") sheets. A sheet takes its geometry from its MedialAxis, so it is
     recomputed after it.
 
+A MedialAxis may also link a Points or Mesh object (a scan, an imported
+STL): then MEDIAL (seed 000) runs on its points - the inner axis of a closed,
+consistently oriented mesh, the whole axis (inner and outer) of a point cloud
+or an open mesh - with Theta = 22.5 (pi/8) by default; Spacing is unused.
+
 Changing the source shape or a parameter recomputes the MedialAxis and its
 sheets (the result is reused when only display properties change). The
 number of sheet objects is adjusted after each document recompute by a
@@ -132,12 +137,31 @@ def describe_non_solid(source, shape):
     )
 
 
+def is_point_object(obj):
+    """A Points or Mesh document object (no B-rep): MEDIAL works on its points."""
+    if not hasattr(obj, "TypeId") or not hasattr(obj, "Document") or is_medial(obj) or is_sheet(obj):
+        return False
+    props = getattr(obj, "PropertiesList", ())
+    return "Shape" not in props and ("Points" in props or "Mesh" in props)
+
+
+def point_signature(points, triangles, theta, rho):
+    digest = hashlib.sha1(np.ascontiguousarray(points).tobytes())
+    if triangles is not None:
+        digest.update(np.ascontiguousarray(triangles).tobytes())
+    return f"points:{digest.hexdigest()}|theta={float(theta)!r}|rho={float(rho)!r}"
+
+
 def source_solids(source):
-    """The solids of a document object, or ValueError saying what it holds."""
+    """The solids of a document object, or ValueError saying what it holds.
+    A Points or Mesh object counts as one source (its points), returned as
+    [source]."""
     if source is None:
         raise ValueError("no source object")
     if not hasattr(source, "TypeId") or not hasattr(source, "Document"):
         raise ValueError(f"{source!r} is not a FreeCAD document object")
+    if is_point_object(source):
+        return [source]
     if "Shape" not in source.PropertiesList:
         raise ValueError(f"'{source.Label}' ({source.TypeId}) has no shape, so no solid; select a solid")
     shape = source_shape(source)
@@ -287,6 +311,8 @@ class MedialAxisFeature:
     def execute(self, obj):
         import time
 
+        if is_point_object(obj.Source):
+            return self.execute_points(obj)
         solid = source_solid(obj.Source, obj.SolidIndex)
         spacing, theta, rho = float(obj.Spacing.Value), float(obj.Theta.Value), float(obj.Rho)
         brep = solid.exportBrepToString()
@@ -310,6 +336,26 @@ class MedialAxisFeature:
         self.apply(obj, result)
         for w in result.warnings if fresh else []:
             App.Console.PrintWarning(f"{obj.Label}: {w}\n")
+
+    def execute_points(self, obj):
+        """MEDIAL on the points of a Points / Mesh source (global coordinates)."""
+        import time
+
+        theta, rho = float(obj.Theta.Value), float(obj.Rho)
+        points, triangles = api.point_source(obj.Source)
+        signature = point_signature(points, triangles, theta, rho)
+        result = get_result(obj) if signature == obj.InputSignature else None
+        if result is None:
+            result = cached_result(signature)
+        if result is None:
+            start = time.perf_counter()
+            (result,) = api.compute_points((points, triangles), theta=theta, rho=rho)
+            result.seconds = time.perf_counter() - start
+            remember_result(signature, result)
+            App.Console.PrintMessage(f"{obj.Label}: MEDIAL, {result.summary.get('axis_note', '')}\n")
+        if signature != obj.InputSignature or not obj.ResultData:
+            self.store(obj, result, signature)
+        self.apply(obj, result)
 
     def store(self, obj, result, signature):
         handle, path = tempfile.mkstemp(prefix="medial_", suffix=".npz")
@@ -671,7 +717,7 @@ def add_to_document(
     doc,
     source,
     spacing=0.0,
-    theta=5.0,
+    theta=None,
     rho=8.0,
     color_by="Radius",
     max_sheet_objects=DEFAULT_MAX_SHEET_OBJECTS,
@@ -684,6 +730,7 @@ def add_to_document(
 
     results: optional precomputed MedialAxisResults, one per solid, for the
     same parameters (a GUI computes them in a worker thread first).
+    theta None: 5 degrees for solids, 22.5 (pi/8) for Points / Mesh sources.
     Raises ValueError if `source` holds no solid (the message says what it
     holds) and whatever the computation raises (InputError, ...)."""
     if doc is None:
@@ -696,6 +743,12 @@ def add_to_document(
         if source is None:
             raise ValueError(f"no object named '{name}' in document '{doc.Name}'")
     solids = source_solids(source)
+    points = is_point_object(source)
+    if theta is None:
+        theta = api.POINT_CLOUD_THETA if points else 5.0
+    if points:
+        results = None  # computed (and cached) by the object itself
+        check_inside = False
     if results is not None:
         if len(results) != len(solids):
             raise ValueError(f"{len(results)} results for {len(solids)} solid(s) of '{source.Label}'")

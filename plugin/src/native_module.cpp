@@ -7,6 +7,7 @@
 //
 // CGAL (core) headers come before any OCCT header: OCCT's `Handle` macro
 // breaks CGAL's own `Handle` templates.
+#include "cadmedial/compute_medial.hpp"
 #include "cadmedial/medial.hpp"
 
 #include <pybind11/numpy.h>
@@ -39,6 +40,7 @@
 #include "cadmedial/sampling.hpp"
 #include "medial_summary.hpp"
 #include "medial_writers.hpp"
+#include "point_input.hpp"
 #include "report_json.hpp"
 
 namespace py = pybind11;
@@ -325,6 +327,85 @@ py::list sample(const std::string& source, double spacing, py::object progressCa
   return out;
 }
 
+// ---------------------------------------------------------------------------
+// MEDIAL on points (point clouds, mesh vertices): seed 000, no B-rep.
+
+py::dict computePoints(const py::array_t<double, py::array::c_style | py::array::forcecast>& points,
+                       const py::object& trianglesObject, double theta, double rho, py::object progressCallback) {
+  if (points.ndim() != 2 || points.shape(1) != 3) throw py::value_error("points must be an N x 3 array");
+  if (!(theta > 0 && theta < 90)) throw py::value_error("theta must be in (0, 90) degrees, got " + std::to_string(theta));
+  if (!(rho > 0)) throw py::value_error("rho must be > 0, got " + std::to_string(rho));
+  PointInput input;
+  input.format = "array";
+  const auto n = static_cast<std::size_t>(points.shape(0));
+  input.points.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    input.points[i] = {points.data()[3 * i], points.data()[3 * i + 1], points.data()[3 * i + 2]};
+  if (!trianglesObject.is_none()) {
+    const auto tri = trianglesObject.cast<py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>>();
+    if (tri.size() > 0 && (tri.ndim() != 2 || tri.shape(1) != 3)) throw py::value_error("triangles must be an M x 3 array");
+    for (py::ssize_t k = 0; k < (tri.size() > 0 ? tri.shape(0) : 0); ++k) {
+      std::array<Index, 3> t;
+      for (int c = 0; c < 3; ++c) {
+        const std::int64_t v = tri.data()[3 * k + c];
+        if (v < 0 || static_cast<std::size_t>(v) >= n)
+          throw py::value_error("triangle " + std::to_string(k) + " refers to vertex " + std::to_string(v) + " of " +
+                                std::to_string(n));
+        t[c] = static_cast<Index>(v);
+      }
+      input.triangles.push_back(t);
+    }
+    input.isMesh = !input.triangles.empty();
+  }
+  if (n < 4) throw InputError(kExitUnreadableInput, std::to_string(n) + " points; a medial axis needs at least 4");
+  MedialParams params = MedialParams::pointCloud();
+  params.thetaDeg = theta;
+  params.rho = rho;
+  Progress progress(std::move(progressCallback));
+  PointMedialResult m;
+  runWithoutGil(progress, [&] {
+    progress.report("medial", 0, 1);
+    m = computeMedial(input.points, params, input.triangles);
+    progress.report("done", 1, 1);
+  });
+  nlohmann::json summary = pointMedialSummaryJson(input, m, params);
+  summary["solid"] = 0;
+  summary["seconds"]["total"] = m.times.total;
+  py::dict d;
+  d["solid"] = 0;
+  d["vertices"] = toArray2<double, 3>(m.vertices);
+  d["radius"] = toArray(m.radius);
+  d["offsets"] = castArray<std::int64_t>(m.polygonOffsets);
+  d["indices"] = castArray<std::int64_t>(m.polygonVertices);
+  d["sheet"] = castArray<std::int64_t>(m.sheet);
+  d["provenance"] = castArray<std::uint8_t>(m.provenance);
+  d["sheet_count"] = m.sheetCount;
+  d["samples"] = n;
+  d["spacing"] = 0.0;
+  d["beta0"] = m.topology.beta0;
+  d["beta1"] = m.topology.beta1;
+  d["seconds"] = m.times.total;
+  d["axis"] = m.cloud.part == MedialAxisPart::Inner ? "inner" : "whole";
+  d["axis_note"] = m.cloud.axisNote;
+  d["warnings"] = py::list();
+  d["summary"] = jsonToPython(summary);
+  return d;
+}
+
+// Points (N x 3) and triangles (M x 3, empty for a point cloud) of a file
+// `cadmedial run` accepts as a point input.
+py::dict readPoints(const std::string& path) {
+  Progress none{py::none()};
+  PointInput in;
+  runWithoutGil(none, [&] { in = readPointInput(path); });
+  py::dict d;
+  d["points"] = toArray2<double, 3>(in.points);
+  d["triangles"] = toArray2<Index, 3, std::int64_t>(in.triangles);
+  d["format"] = in.format;
+  d["warnings"] = toList(in.warnings);
+  return d;
+}
+
 // Cheap facts per solid (no sampling): for spacing defaults and estimates.
 py::list inspect(const std::string& source) {
   Progress none{py::none()};
@@ -506,5 +587,15 @@ triangle_face, spacing, warnings and report (the sampling.json dict).)");
 (DESIGN.md section 6), as `cadmedial eval` does: returns its eval.json dict
 (inside, medialness, coverage, attachment, topology, thresholds, pass).
 tolerance: the fraction of the bounding-box diagonal used as tol.)");
+  m.def("compute_points", &computePoints, py::arg("points"), py::arg("triangles") = py::none(),
+        py::arg("theta") = 22.5, py::arg("rho") = 8.0, py::arg("progress") = py::none(),
+        R"(MEDIAL (seed 000) on points alone: a point cloud (triangles None) gives the whole
+medial axis, inner and outer; the vertices of a closed, consistently oriented
+mesh (triangles M x 3) give its inner axis. Returns one dict with the keys of
+compute() plus axis ("inner" | "whole") and axis_note.)");
+  m.def("read_points", &readPoints, py::arg("path"),
+        "Points (N x 3) and triangles (M x 3) of a .xyz/.pts/.ply/.stl/.obj/.off file, as `cadmedial run` reads it.");
+  m.def("is_point_input", &isPointInputPath, py::arg("path"),
+        "True if `cadmedial run` treats this file name as a point cloud or mesh (.xyz .pts .ply .stl .obj .off).");
   m.attr("PAIR_MESH_AVAILABLE") = false;
 }

@@ -25,6 +25,7 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 
+#include "cadmedial/ball_tree.hpp"
 #include "cadmedial/exact_oracle.hpp"
 #include "feature_classification.hpp"
 #include "solid_topology.hpp"
@@ -84,94 +85,6 @@ void forEach(std::size_t n, bool parallel, const std::function<void(std::size_t)
     for (std::size_t i = r.begin(); i != r.end(); ++i) body(i);
   });
 }
-
-// Balls (medial vertex, radius) in a bounding-volume hierarchy over their
-// centres, for min_v(|b - v| - r(v)) by branch and bound: a node's bound is
-// the distance to its centres' box minus its largest radius.
-class BallTree {
- public:
-  struct Ball {
-    gp_XYZ centre;
-    double radius;
-  };
-  explicit BallTree(std::vector<Ball> balls) : balls_(std::move(balls)) {
-    if (!balls_.empty()) build(0, static_cast<std::uint32_t>(balls_.size()));
-  }
-
-  // Smallest gap |p - c| - r over all balls; the search stops as soon as a
-  // gap <= stopAt is found (then the result is only known to be <= stopAt).
-  double minGap(const gp_XYZ& p, double stopAt) const {
-    double best = std::numeric_limits<double>::infinity();
-    if (nodes_.empty()) return best;
-    std::vector<std::pair<double, std::uint32_t>> stack{{bound(nodes_[0], p), 0}};
-    while (!stack.empty()) {
-      const auto [lb, i] = stack.back();
-      stack.pop_back();
-      if (lb >= best) continue;
-      const Node& node = nodes_[i];
-      if (node.left < 0) {
-        for (std::uint32_t k = node.begin; k < node.end; ++k) {
-          best = std::min(best, (p - balls_[k].centre).Modulus() - balls_[k].radius);
-          if (best <= stopAt) return best;
-        }
-        continue;
-      }
-      const double l = bound(nodes_[node.left], p), r = bound(nodes_[node.right], p);
-      // Push the farther child first so the nearer one is searched first.
-      if (l < r) {
-        stack.emplace_back(r, node.right);
-        stack.emplace_back(l, node.left);
-      } else {
-        stack.emplace_back(l, node.left);
-        stack.emplace_back(r, node.right);
-      }
-    }
-    return best;
-  }
-
- private:
-  struct Node {
-    gp_XYZ lo, hi;
-    double maxRadius = 0;
-    std::uint32_t begin = 0, end = 0;
-    std::int32_t left = -1, right = -1;
-  };
-  static double bound(const Node& n, const gp_XYZ& p) {
-    double s = 0;
-    for (int k = 1; k <= 3; ++k) {
-      const double d = std::max({n.lo.Coord(k) - p.Coord(k), 0.0, p.Coord(k) - n.hi.Coord(k)});
-      s += d * d;
-    }
-    return std::sqrt(s) - n.maxRadius;
-  }
-  std::int32_t build(std::uint32_t begin, std::uint32_t end) {
-    Node node;
-    node.begin = begin;
-    node.end = end;
-    node.lo = node.hi = balls_[begin].centre;
-    for (std::uint32_t k = begin; k < end; ++k) {
-      const gp_XYZ& c = balls_[k].centre;
-      node.lo.SetCoord(std::min(node.lo.X(), c.X()), std::min(node.lo.Y(), c.Y()), std::min(node.lo.Z(), c.Z()));
-      node.hi.SetCoord(std::max(node.hi.X(), c.X()), std::max(node.hi.Y(), c.Y()), std::max(node.hi.Z(), c.Z()));
-      node.maxRadius = std::max(node.maxRadius, balls_[k].radius);
-    }
-    const std::int32_t id = static_cast<std::int32_t>(nodes_.size());
-    nodes_.push_back(node);
-    if (end - begin <= 8) return id;
-    const gp_XYZ extent = node.hi - node.lo;
-    const int axis = extent.X() >= extent.Y() && extent.X() >= extent.Z() ? 1 : (extent.Y() >= extent.Z() ? 2 : 3);
-    const std::uint32_t mid = begin + (end - begin) / 2;
-    std::nth_element(balls_.begin() + begin, balls_.begin() + mid, balls_.begin() + end,
-                     [axis](const Ball& a, const Ball& b) { return a.centre.Coord(axis) < b.centre.Coord(axis); });
-    const std::int32_t left = build(begin, mid);
-    const std::int32_t right = build(mid, end);
-    nodes_[id].left = left;
-    nodes_[id].right = right;
-    return id;
-  }
-  std::vector<Ball> balls_;
-  std::vector<Node> nodes_;
-};
 
 using K = CGAL::Simple_cartesian<double>;
 using Triangles = std::vector<K::Triangle_3>;
@@ -509,11 +422,14 @@ EvaluationReport MedialEvaluator::evaluate(const MedialMesh& mesh) const {
   {
     std::vector<BallTree::Ball> balls;
     for (std::uint32_t v = 0; v < mesh.vertices.size(); ++v)
-      if (used[v]) balls.push_back({toPnt(mesh.vertices[v]).XYZ(), mesh.radius[v]});
+      if (used[v]) balls.push_back({mesh.vertices[v], mesh.radius[v]});
     const BallTree tree(std::move(balls));
     std::vector<double> gap(p.boundary.size());
     forEach(p.boundary.size(), params.parallel,
-            [&](std::size_t i) { gap[i] = tree.minGap(p.boundary[i].XYZ(), p.tolerance); });
+            [&](std::size_t i) {
+              const gp_Pnt& b = p.boundary[i];
+              gap[i] = tree.minGap(Vec3{b.X(), b.Y(), b.Z()}, p.tolerance);
+            });
     CoverageMetric& m = rep.coverage;
     m.points = gap.size();
     for (double g : gap) {

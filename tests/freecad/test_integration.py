@@ -163,6 +163,40 @@ def main():
           f"torus: {torus_axis.Sheets} sheets in {len(torus_sheets)} objects, beta1 {torus_axis.Beta1}")
     check(sum(s.Polygons for s in torus_sheets) == torus_axis.Polygons, "torus: every polygon in some sheet object")
 
+    # --- Points and Mesh objects: MEDIAL on their points ----------------------------------
+    import Mesh
+    import MeshPart
+    import Points
+
+    torus_mesh = MeshPart.meshFromShape(Shape=torus.Shape, LinearDeflection=0.2, AngularDeflection=0.15)
+    mesh_obj = doc.addObject("Mesh::Feature", "TorusMesh")
+    mesh_obj.Mesh = torus_mesh
+    doc.recompute()
+    check(document.is_point_object(mesh_obj) and not document.is_point_object(torus_axis),
+          "Mesh::Feature is a point source, a MedialAxis is not")
+    (mesh_axis,) = cadmedial.add_to_document(doc, mesh_obj)
+    mesh_result = document.get_result(mesh_axis)
+    check(healthy(mesh_axis) and abs(mesh_axis.Theta.Value - 22.5) < 1e-9 and mesh_axis.Polygons > 100,
+          f"torus mesh: {mesh_axis.Samples} points, {mesh_axis.Polygons} polygons, theta {mesh_axis.Theta.Value}")
+    closed = torus_mesh.isSolid() and not torus_mesh.hasNonManifolds()
+    check(mesh_result.summary["axis"] == ("inner" if closed else "whole"),
+          f"mesh axis part {mesh_result.summary['axis']} (closed: {closed}): {mesh_result.summary['axis_note']}")
+    if closed:
+        check(mesh_axis.Beta0 == 1 and mesh_axis.Beta1 == 1, f"torus mesh inner axis: beta0/beta1 "
+              f"{mesh_axis.Beta0}/{mesh_axis.Beta1} (the core circle)")
+    x_max = mesh_axis.Mesh.BoundBox.XMax
+    mesh_obj.Placement.Base = App.Vector(500, 0, 0)
+    doc.recompute()
+    check(healthy(mesh_axis) and close(mesh_axis.Mesh.BoundBox.XMax, x_max + 500, 1e-6),
+          "moving the mesh object moves its axis (global coordinates, recomputed)")
+    cloud = doc.addObject("Points::Feature", "TorusCloud")
+    cloud.Points = Points.Points([App.Vector(*p) for p in torus_mesh.Topology[0]])
+    doc.recompute()
+    (cloud_axis,) = cadmedial.add_to_document(doc, cloud)
+    check(healthy(cloud_axis) and document.get_result(cloud_axis).summary["axis"] == "whole"
+          and cloud_axis.Polygons > mesh_axis.Polygons,
+          f"point cloud: whole axis ({cloud_axis.Polygons} polygons, outer part included)")
+
     # --- export ---------------------------------------------------------------------------
     from cadmedial.export import read_ply
 

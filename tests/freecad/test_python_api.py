@@ -77,6 +77,34 @@ def main():
     leftovers = [f for f in os.listdir(tmp) if ".tmp" in f]
     check(not leftovers, "no temporary files left")
 
+    # MEDIAL on points alone: the box's samples as a closed mesh (inner axis),
+    # as a bare cloud (whole axis), and from files by extension.
+    (cloud_axis,) = cadmedial.compute_points((samples.points, samples.triangles))
+    check(cloud_axis.summary["algorithm"] == "MEDIAL" and cloud_axis.summary["axis"] == "inner",
+          f"closed mesh -> inner axis ({cloud_axis.summary['axis_note']})")
+    check(cloud_axis.polygon_count > 100 and cloud_axis.beta0 == 1, repr(cloud_axis))
+    check(abs(cloud_axis.summary["parameters"]["theta_deg"] - 22.5) < 1e-12, "point-cloud theta pi/8")
+    box_lo, box_hi = samples.points.min(axis=0), samples.points.max(axis=0)
+    check(bool(((cloud_axis.vertices >= box_lo - 1e-9) & (cloud_axis.vertices <= box_hi + 1e-9)).all()),
+          "inner axis of the box lies in the box")
+    (whole,) = cadmedial.compute(samples.points)
+    check(whole.summary["axis"] == "whole", f"bare cloud -> whole axis ({whole.summary['axis_note']})")
+    xyz = os.path.join(tmp, "box.xyz")
+    np.savetxt(xyz, samples.points)
+    (from_file,) = cadmedial.compute(xyz)
+    check(from_file.summary["axis"] == "whole" and from_file.polygon_count == whole.polygon_count,
+          ".xyz file gives the same axis as the array")
+    try:
+        cadmedial.compute_points(np.zeros((3, 3)))
+        check(False, "3 points raise")
+    except ValueError as e:
+        check(isinstance(e, cadmedial.InputError), f"3 points: {e}")
+    try:
+        cadmedial.compute_points((samples.points, [[0, 1, 10**9]]))
+        check(False, "bad triangle index raises")
+    except ValueError as e:
+        check("refers to vertex" in str(e), f"bad triangle: {e}")
+
     # The GIL is released while C++ runs: the main thread keeps going.
     done = threading.Event()
     box = os.path.join(models, "flange.step")

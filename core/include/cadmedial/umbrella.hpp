@@ -28,4 +28,11 @@ struct UmbrellaData {
 // with SampleSet::buildUmbrellas() when empty).
 UmbrellaData computeUmbrellaData(const SampleSet& samples);
 
+// The same from explicit umbrellas: sample i's umbrella is
+// triangles[members[offsets[i] .. offsets[i+1])] (offsets.size() = samples + 1).
+// Used by CAD_MEDIAL (reconstruction triangles) and by MEDIAL (Delaunay
+// triangles cut by the tangent polygon, medial_umbrellas.hpp).
+UmbrellaData umbrellaDataFromTriangles(const std::vector<Vec3>& points, const std::vector<std::array<Index, 3>>& triangles,
+                                       const std::vector<Index>& offsets, const std::vector<Index>& members);
+
 }  // namespace cadmedial

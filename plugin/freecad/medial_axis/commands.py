@@ -79,7 +79,8 @@ class ComputeCommand:
             "Accel": "M, A",
             "ToolTip": "Inner medial axis of the selected solids: one parametric MedialAxis object per solid, "
             "with one mesh per medial sheet. Opens a task panel for the sample spacing and the "
-            "CAD_MEDIAL parameters (theta, rho).",
+            "CAD_MEDIAL parameters (theta, rho). Points and Mesh objects get MEDIAL on their points "
+            "directly (inner axis of a closed mesh, whole axis of a point cloud).",
         }
 
     def IsActive(self):
@@ -91,11 +92,19 @@ class ComputeCommand:
             if not objects:
                 report_error("select one or more solids first")
                 return
-            sources, errors = solid_sources(objects)
+            from cadmedial import document
+
+            # Points / Mesh objects (scans, STL imports): MEDIAL on their points,
+            # with the point-cloud defaults; no task panel (no spacing to choose).
+            point_objects = [o for o in objects if document.is_point_object(o)]
+            for obj in point_objects:
+                self.compute_points(obj)
+            sources, errors = solid_sources([o for o in objects if o not in point_objects])
             for e in errors:
                 report_error(e)
             if not sources:
-                report_error("nothing to do: the selection holds no solid")
+                if not point_objects:
+                    report_error("nothing to do: the selection holds no solid, points or mesh")
                 return
             if Gui.Control.activeDialog():
                 report_error("close the open task panel first")
@@ -105,6 +114,19 @@ class ComputeCommand:
             Gui.Control.showDialog(task_panel.MedialAxisTaskPanel(sources=[s for s, _ in sources]))
         except Exception as e:  # noqa: BLE001 - never let an exception reach FreeCAD
             report_error(f"{type(e).__name__}: {e}")
+
+
+    @staticmethod
+    def compute_points(obj):
+        from cadmedial import document
+
+        try:
+            (axis,) = document.add_to_document(obj.Document, obj)
+            result = document.get_result(axis)
+            note = result.summary.get("axis_note", "") if result is not None else ""
+            report_message(f"'{obj.Label}': MEDIAL on {axis.Samples} points, {axis.Polygons} polygons; {note}")
+        except Exception as e:  # noqa: BLE001 - never let an exception reach FreeCAD
+            report_error(f"'{obj.Label}': {type(e).__name__}: {e}")
 
 
 class ExportCommand:

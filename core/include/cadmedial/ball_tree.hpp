@@ -1,0 +1,112 @@
+// Balls (centre, radius) in a bounding-volume hierarchy over their centres,
+// for min_v(|p - c_v| - r_v) by branch and bound: a node's bound is the
+// distance to its centres' box minus its largest radius. Coverage of a
+// boundary by medial balls (DESIGN.md §6) asks exactly this per boundary
+// point; used by sampling/'s evaluation and by the analytic MEDIAL tests.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "cadmedial/sample_set.hpp"
+
+namespace cadmedial {
+
+class BallTree {
+ public:
+  struct Ball {
+    Vec3 centre;
+    double radius;
+  };
+  explicit BallTree(std::vector<Ball> balls) : balls_(std::move(balls)) {
+    if (!balls_.empty()) build(0, static_cast<std::uint32_t>(balls_.size()));
+  }
+
+  // Smallest gap |p - c| - r over all balls (+inf without balls); the search
+  // stops as soon as a gap <= stopAt is found (then the result is only known
+  // to be <= stopAt).
+  double minGap(const Vec3& p, double stopAt) const {
+    double best = std::numeric_limits<double>::infinity();
+    if (nodes_.empty()) return best;
+    std::vector<std::pair<double, std::uint32_t>> stack{{bound(nodes_[0], p), 0}};
+    while (!stack.empty()) {
+      const auto [lb, i] = stack.back();
+      stack.pop_back();
+      if (lb >= best) continue;
+      const Node& node = nodes_[i];
+      if (node.left < 0) {
+        for (std::uint32_t k = node.begin; k < node.end; ++k) {
+          best = std::min(best, distance(p, balls_[k].centre) - balls_[k].radius);
+          if (best <= stopAt) return best;
+        }
+        continue;
+      }
+      const double l = bound(nodes_[node.left], p), r = bound(nodes_[node.right], p);
+      // Push the farther child first so the nearer one is searched first.
+      if (l < r) {
+        stack.emplace_back(r, node.right);
+        stack.emplace_back(l, node.left);
+      } else {
+        stack.emplace_back(l, node.left);
+        stack.emplace_back(r, node.right);
+      }
+    }
+    return best;
+  }
+
+ private:
+  struct Node {
+    Vec3 lo, hi;
+    double maxRadius = 0;
+    std::uint32_t begin = 0, end = 0;
+    std::int32_t left = -1, right = -1;
+  };
+  static double distance(const Vec3& a, const Vec3& b) {
+    const double x = a[0] - b[0], y = a[1] - b[1], z = a[2] - b[2];
+    return std::sqrt(x * x + y * y + z * z);
+  }
+  static double bound(const Node& n, const Vec3& p) {
+    double s = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double d = std::max({n.lo[k] - p[k], 0.0, p[k] - n.hi[k]});
+      s += d * d;
+    }
+    return std::sqrt(s) - n.maxRadius;
+  }
+  std::int32_t build(std::uint32_t begin, std::uint32_t end) {
+    Node node;
+    node.begin = begin;
+    node.end = end;
+    node.lo = node.hi = balls_[begin].centre;
+    for (std::uint32_t k = begin; k < end; ++k) {
+      const Vec3& c = balls_[k].centre;
+      for (int j = 0; j < 3; ++j) {
+        node.lo[j] = std::min(node.lo[j], c[j]);
+        node.hi[j] = std::max(node.hi[j], c[j]);
+      }
+      node.maxRadius = std::max(node.maxRadius, balls_[k].radius);
+    }
+    const std::int32_t id = static_cast<std::int32_t>(nodes_.size());
+    nodes_.push_back(node);
+    if (end - begin <= 8) return id;
+    int axis = 0;
+    for (int j = 1; j < 3; ++j)
+      if (node.hi[j] - node.lo[j] > node.hi[axis] - node.lo[axis]) axis = j;
+    const std::uint32_t mid = begin + (end - begin) / 2;
+    std::nth_element(balls_.begin() + begin, balls_.begin() + mid, balls_.begin() + end,
+                     [axis](const Ball& a, const Ball& b) { return a.centre[axis] < b.centre[axis]; });
+    const std::int32_t left = build(begin, mid);
+    const std::int32_t right = build(mid, end);
+    nodes_[id].left = left;
+    nodes_[id].right = right;
+    return id;
+  }
+  std::vector<Ball> balls_;
+  std::vector<Node> nodes_;
+};
+
+}  // namespace cadmedial
