@@ -1,0 +1,135 @@
+// Pair-mesh (seed 003 §4, DESIGN.md §5): a tetrahedral complex that links the
+// inner part of the Voronoi diagram of the samples to the boundary surface
+// made of Delaunay triangles, on the same Delaunay triangulation as CAD_MEDIAL.
+//
+//   inner cells   Delaunay cells whose Voronoi vertex (circumcenter) is inside
+//                 the solid; decided by the caller (exact classifier), so core
+//                 stays free of OCCT. Infinite cells are outer.
+//   boundary      Delaunay triangles between an inner and an outer cell,
+//                 oriented outward: closed by construction.
+//   elements      Face-Vertex pyramids: a Voronoi facet whose Delaunay edge ab
+//                 has only inner cells around it, coned to a and to b
+//                 (fan-split into tetrahedra);
+//                 Edge-Edge: at a boundary edge ab, each Voronoi edge between
+//                 two consecutive inner cells, joined to ab;
+//                 Vertex-Face: a boundary triangle joined to the Voronoi
+//                 vertex of its inner cell.
+//
+// Every tetrahedron is stored with a positive orientation when valid:
+//   FaceVertex (a, c0, ci, ci+1)  a the apex sample, c the facet's Voronoi
+//                                 vertices turning positively about a -> b
+//   EdgeEdge   (a, b, ci, ci+1)   ci, ci+1 turning positively about a -> b
+//   VertexFace (c, x, y, z)       (x, y, z) the outward boundary triangle
+// Whatever the node positions, the signed volumes add up to the volume
+// enclosed by the boundary (a chain identity), so the complex is a valid
+// partition of that volume exactly when no element has a negative volume.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "cadmedial/delaunay.hpp"
+#include "cadmedial/polygon_complex.hpp"
+#include "cadmedial/sample_set.hpp"
+
+namespace cadmedial {
+
+enum class PairElementType : std::uint8_t { FaceVertex = 0, EdgeEdge = 1, VertexFace = 2 };
+const char* pairElementTypeName(PairElementType t);
+
+struct PairMeshCounts {
+  std::size_t innerCells = 0;
+  std::size_t boundaryTriangles = 0;
+  std::size_t faceVertex = 0, edgeEdge = 0, vertexFace = 0;  // tetrahedra of each type
+  // Repair (seed 003 §4.1): Voronoi nodes moved toward the inside of their
+  // Delaunay cell, and elements negative before / after it.
+  std::size_t invertedBeforeRepair = 0;
+  std::size_t movedNodes = 0;
+  std::size_t invertedAfterRepair = 0;
+};
+
+struct PairMesh {
+  // Nodes: node i < sampleNodes is sample i (boundary vertex); the others are
+  // Voronoi vertices, one per inner cell, at nodes[...] (the circumcenter,
+  // unless the repair moved it).
+  std::vector<Vec3> nodes;
+  std::size_t sampleNodes = 0;
+  std::vector<Index> nodeCell;        // per node: its Delaunay cell, kNoIndex for samples
+  std::vector<std::array<Index, 4>> tets;
+  std::vector<PairElementType> type;
+  // Dual data per tetrahedron (kNoIndex where unused):
+  //   medialSimplex: FaceVertex -> the Delaunay edge {p, q} (samples) of its
+  //   Voronoi facet; EdgeEdge -> the two cells of its Voronoi edge;
+  //   VertexFace -> {cell, -}.
+  //   boundarySimplex: FaceVertex -> {apex sample}; EdgeEdge -> {a, b};
+  //   VertexFace -> {x, y, z}.
+  std::vector<std::array<Index, 2>> medialSimplex;
+  std::vector<std::array<Index, 3>> boundarySimplex;
+  // 1 if the medial simplex belongs to the CAD_MEDIAL inner sheets (the
+  // facet, one of their edges, one of their vertices).
+  std::vector<std::uint8_t> onSheets;
+  std::vector<std::array<Index, 3>> boundaryTriangles;  // outward, sample ids
+  PairMeshCounts counts;
+  double seconds = 0;        // construction
+  double repairSeconds = 0;
+
+  std::size_t size() const { return tets.size(); }
+  bool isSampleNode(Index n) const { return n < sampleNodes; }
+};
+
+// Builds the pair-mesh from the triangulation and per-cell inner labels
+// (cellInner[id] != 0: inner; size dv.cellCount()). innerAxis (optional): the
+// CAD_MEDIAL inner complex built on the same triangulation, for onSheets.
+// Runs the repair unless repair is false.
+PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, const std::vector<std::uint8_t>& cellInner,
+                       const MedialComplex* innerAxis = nullptr, bool repair = true);
+
+// Seed 003 §4.1, first case: a Voronoi node of a negative element is moved
+// toward the centroid of its Delaunay cell (inside the cell: its Vertex-Face
+// elements turn positive) by the smallest step that leaves all its elements
+// non-negative, or failing that by the step that leaves the fewest negative.
+// Updates the counts; returns the number of negative elements left.
+std::size_t repairFlippedElements(PairMesh& mesh, const DelaunayVoronoi& dv, int rounds = 6);
+
+// Signed volume of tetrahedron i (positive = valid orientation).
+double tetVolume(const PairMesh& mesh, std::size_t i);
+// A volume counts as negative below -negligible: 1e-12 × (longest edge)³,
+// the rounding of the determinant, not geometry.
+double negligibleVolume(const PairMesh& mesh, std::size_t i);
+
+// DESIGN.md §6 pair-mesh validity.
+struct PairMeshValidity {
+  std::size_t elements = 0;
+  std::size_t inverted = 0;     // volume < -negligible
+  std::size_t degenerate = 0;   // |volume| <= negligible
+  double sumVolume = 0;         // Σ vol
+  double sumAbsVolume = 0;      // Σ |vol|
+  double enclosedVolume = 0;    // enclosed by the boundary triangles (divergence theorem)
+  double overlapError = 0;      // (Σ|vol| - |Σ vol|) / enclosed: 0 iff nothing folds over
+  double gapError = 0;          // |Σ vol - enclosed| / enclosed
+  std::size_t boundaryTriangles = 0;
+  std::size_t boundaryTrianglesNotInOneVertexFace = 0;  // must be 0
+  std::size_t boundaryEdgesNotShared = 0;  // edges in an odd number of boundary triangles (must be 0: closed)
+
+  bool valid(double relativeTolerance = 1e-9) const {
+    return inverted == 0 && overlapError <= relativeTolerance && gapError <= relativeTolerance &&
+           boundaryTrianglesNotInOneVertexFace == 0 && boundaryEdgesNotShared == 0 && enclosedVolume > 0;
+  }
+};
+PairMeshValidity checkPairMesh(const PairMesh& mesh);
+
+// Iso-parametric surface at t in [0, 1] (seed 003 §4.2): one node per interim
+// edge (sample s, Voronoi node v) at (1 - t) v + t s; per element its cut:
+// Face-Vertex -> a polygon (fan-split like the pyramid), Edge-Edge -> a
+// quadrilateral (2 triangles), Vertex-Face -> a triangle; oriented from the
+// medial side toward the boundary. At t = 1 (t = 0) the nodes of a sample
+// (of a Voronoi node) coincide and are merged, and faces that collapse are
+// dropped: at t = 1 this leaves exactly the boundary triangles.
+struct IsoSurface {
+  std::vector<Vec3> points;
+  std::vector<std::array<Index, 3>> triangles;
+};
+IsoSurface isoSurface(const PairMesh& mesh, double t);
+
+}  // namespace cadmedial

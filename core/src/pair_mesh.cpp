@@ -1,0 +1,218 @@
+#include "cadmedial/pair_mesh.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "cadmedial/edge_table.hpp"
+#include "cadmedial/timer.hpp"
+
+namespace cadmedial {
+
+namespace {
+
+using Kernel = DelaunayVoronoi::Kernel;
+using Cell_handle = DelaunayVoronoi::Cell_handle;
+using Vertex_handle = DelaunayVoronoi::Vertex_handle;
+
+// Local vertex pairs of the six edges of a cell, and the edge of a pair.
+constexpr int kEdgeI[6] = {0, 0, 0, 1, 1, 2};
+constexpr int kEdgeJ[6] = {1, 2, 3, 2, 3, 3};
+constexpr int kEdgeOf[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
+
+// What of the inner CAD_MEDIAL axis each kind of medial simplex can belong to.
+struct SheetMembership {
+  PairTable facetEdges;    // Delaunay edges {p, q} of inner facets
+  PairTable voronoiEdges;  // cell pairs that are polygon edges
+  std::vector<std::uint8_t> cells;
+};
+
+SheetMembership sheetMembership(const MedialComplex* axis, std::size_t cellCount) {
+  SheetMembership m;
+  m.cells.assign(cellCount, 0);
+  if (!axis) return m;
+  m.facetEdges.reserve(axis->polygonCount());
+  m.voronoiEdges.reserve(axis->polygonVertices.size());
+  for (std::size_t p = 0; p < axis->polygonCount(); ++p) {
+    if (axis->provenance[p] == PolygonProvenance::DelaunayEdgeFacet)
+      m.facetEdges.insert(axis->provenanceSamples[p][0], axis->provenanceSamples[p][1], 1);
+    const Index b = axis->polygonOffsets[p], e = axis->polygonOffsets[p + 1];
+    for (Index k = b; k < e; ++k) {
+      const Index c = axis->vertexCell[axis->polygonVertices[k]];
+      const Index d = axis->vertexCell[axis->polygonVertices[k + 1 < e ? k + 1 : b]];
+      if (c != kNoIndex && c < cellCount) m.cells[c] = 1;
+      if (c != kNoIndex && d != kNoIndex) m.voronoiEdges.insert(c, d, 1);
+    }
+  }
+  return m;
+}
+
+class Builder {
+ public:
+  Builder(const DelaunayVoronoi& dv, const SampleSet& samples, const std::vector<std::uint8_t>& cellInner,
+          const MedialComplex* axis)
+      : dv_(dv), dt_(dv.triangulation()), inner_(cellInner), sheets_(sheetMembership(axis, dv.cellCount())) {
+    if (cellInner.size() != dv.cellCount()) throw std::invalid_argument("pair-mesh: one inner label per cell needed");
+    m_.nodes = samples.points;
+    m_.sampleNodes = samples.points.size();
+    m_.nodeCell.assign(m_.sampleNodes, kNoIndex);
+    nodeOfCell_.assign(dv.cellCount(), kNoIndex);
+    for (Index c = 0; c < dv.cellCount(); ++c)
+      if (isInner(c)) {
+        nodeOfCell_[c] = static_cast<Index>(m_.nodes.size());
+        m_.nodes.push_back(dv.circumcenter(c));
+        m_.nodeCell.push_back(c);
+        ++m_.counts.innerCells;
+      }
+  }
+
+  PairMesh build() {
+    if (dv_.dimension() == 3) {
+      edgeElements();
+      vertexFaceElements();
+    }
+    return std::move(m_);
+  }
+
+ private:
+  bool isInner(Index c) const { return !dv_.isInfinite(c) && inner_[c] != 0; }
+
+  void add(PairElementType t, std::array<Index, 4> tet, std::array<Index, 2> medial, std::array<Index, 3> boundary,
+           bool onSheets) {
+    m_.tets.push_back(tet);
+    m_.type.push_back(t);
+    m_.medialSimplex.push_back(medial);
+    m_.boundarySimplex.push_back(boundary);
+    m_.onSheets.push_back(onSheets ? 1 : 0);
+  }
+
+  // Face-Vertex (interior edge) or Edge-Edge (boundary edge) elements of every
+  // finite Delaunay edge, each edge visited once (a bit per local edge).
+  void edgeElements() {
+    std::vector<std::uint8_t> done(dv_.cellCount(), 0);
+    std::vector<Cell_handle> ring;
+    for (Index id = 0; id < dv_.cellCount(); ++id) {
+      if (dv_.isInfinite(id)) continue;
+      const Cell_handle c = dv_.cell(id);
+      for (int e = 0; e < 6; ++e) {
+        if (done[id] & (1u << e)) continue;
+        const Vertex_handle va = c->vertex(kEdgeI[e]), vb = c->vertex(kEdgeJ[e]);
+        ring.clear();
+        auto circ = dt_.incident_cells(c, kEdgeI[e], kEdgeJ[e]);
+        const auto start = circ;
+        do {
+          ring.push_back(circ);
+          const Index cid = DelaunayVoronoi::cellId(circ);
+          done[cid] |= static_cast<std::uint8_t>(1u << kEdgeOf[circ->index(va)][circ->index(vb)]);
+          ++circ;
+        } while (circ != start);
+        edge(va, vb, ring);
+      }
+    }
+  }
+
+  // Turns `ring` (cells around ab) so that it goes positively about a -> b:
+  // for an inner (hence finite) cell c of it, the next cell shares c's facet
+  // opposite w, and (a, b, w, w') must be positively oriented.
+  void orientRing(Vertex_handle va, Vertex_handle vb, std::vector<Cell_handle>& ring) const {
+    std::size_t k = 0;
+    while (!isInner(DelaunayVoronoi::cellId(ring[k]))) ++k;
+    const Cell_handle c = ring[k], next = ring[(k + 1) % ring.size()];
+    Vertex_handle w, w2;
+    for (int i = 0; i < 4; ++i) {
+      const Vertex_handle u = c->vertex(i);
+      if (u == va || u == vb) continue;
+      if (c->neighbor(i) == next) w = u;
+      else w2 = u;
+    }
+    if (CGAL::orientation(va->point(), vb->point(), w->point(), w2->point()) == CGAL::NEGATIVE)
+      std::reverse(ring.begin(), ring.end());
+  }
+
+  void edge(Vertex_handle va, Vertex_handle vb, std::vector<Cell_handle>& ring) {
+    std::size_t innerCount = 0;
+    for (const Cell_handle& r : ring) innerCount += isInner(DelaunayVoronoi::cellId(r)) ? 1 : 0;
+    if (innerCount == 0) return;
+    orientRing(va, vb, ring);
+    const Index a = va->info(), b = vb->info();
+    const std::size_t k = ring.size();
+    if (innerCount == k) {  // interior edge: two Face-Vertex pyramids
+      const bool linked = sheets_.facetEdges.find(a, b) != kNoIndex;
+      const std::array<Index, 2> facet{std::min(a, b), std::max(a, b)};
+      const Index n0 = node(ring[0]);
+      for (std::size_t i = 1; i + 1 < k; ++i) {
+        const Index ni = node(ring[i]), nj = node(ring[i + 1]);
+        add(PairElementType::FaceVertex, {a, n0, ni, nj}, facet, {a, kNoIndex, kNoIndex}, linked);
+        add(PairElementType::FaceVertex, {b, n0, nj, ni}, facet, {b, kNoIndex, kNoIndex}, linked);
+        m_.counts.faceVertex += 2;
+      }
+      return;
+    }
+    for (std::size_t i = 0; i < k; ++i) {  // boundary edge: Edge-Edge per inner Voronoi edge
+      const Index ci = DelaunayVoronoi::cellId(ring[i]), cj = DelaunayVoronoi::cellId(ring[(i + 1) % k]);
+      if (!isInner(ci) || !isInner(cj)) continue;
+      const bool linked = sheets_.voronoiEdges.find(ci, cj) != kNoIndex;
+      add(PairElementType::EdgeEdge, {a, b, nodeOfCell_[ci], nodeOfCell_[cj]}, {ci, cj}, {a, b, kNoIndex}, linked);
+      ++m_.counts.edgeEdge;
+    }
+  }
+
+  Index node(Cell_handle c) const { return nodeOfCell_[DelaunayVoronoi::cellId(c)]; }
+
+  // Vertex-Face: every facet of an inner cell whose neighbour is outer.
+  void vertexFaceElements() {
+    for (Index id = 0; id < dv_.cellCount(); ++id) {
+      if (!isInner(id)) continue;
+      const Cell_handle c = dv_.cell(id);
+      for (int i = 0; i < 4; ++i) {
+        if (isInner(DelaunayVoronoi::cellId(c->neighbor(i)))) continue;
+        Vertex_handle x = c->vertex((i + 1) & 3), y = c->vertex((i + 2) & 3), z = c->vertex((i + 3) & 3);
+        // Outward: the cell's own vertex i on the negative side.
+        if (CGAL::orientation(x->point(), y->point(), z->point(), c->vertex(i)->point()) == CGAL::POSITIVE)
+          std::swap(y, z);
+        const std::array<Index, 3> tri{x->info(), y->info(), z->info()};
+        m_.boundaryTriangles.push_back(tri);
+        add(PairElementType::VertexFace, {nodeOfCell_[id], tri[0], tri[1], tri[2]}, {id, kNoIndex}, tri,
+            sheets_.cells[id] != 0);
+        ++m_.counts.vertexFace;
+      }
+    }
+    m_.counts.boundaryTriangles = m_.boundaryTriangles.size();
+  }
+
+  const DelaunayVoronoi& dv_;
+  const DelaunayVoronoi::Triangulation& dt_;
+  const std::vector<std::uint8_t>& inner_;
+  SheetMembership sheets_;
+  std::vector<Index> nodeOfCell_;
+  PairMesh m_;
+};
+
+}  // namespace
+
+const char* pairElementTypeName(PairElementType t) {
+  switch (t) {
+    case PairElementType::FaceVertex: return "face-vertex";
+    case PairElementType::EdgeEdge: return "edge-edge";
+    case PairElementType::VertexFace: return "vertex-face";
+  }
+  return "?";
+}
+
+PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, const std::vector<std::uint8_t>& cellInner,
+                       const MedialComplex* innerAxis, bool repair) {
+  Stopwatch watch;
+  PairMesh mesh = Builder(dv, samples, cellInner, innerAxis).build();
+  mesh.seconds = watch.seconds();
+  watch.restart();
+  if (repair) {
+    repairFlippedElements(mesh, dv);
+  } else {
+    std::size_t negative = 0;
+    for (std::size_t i = 0; i < mesh.size(); ++i) negative += tetVolume(mesh, i) < -negligibleVolume(mesh, i) ? 1 : 0;
+    mesh.counts.invertedBeforeRepair = mesh.counts.invertedAfterRepair = negative;
+  }
+  mesh.repairSeconds = watch.seconds();
+  return mesh;
+}
+
+}  // namespace cadmedial

@@ -1,0 +1,225 @@
+// Pair-mesh (seed 003 §4, DESIGN.md §5) on shapes with exact inside tests and
+// volumes: sphere and torus point sets, the planar test solids (box,
+// L-prism, box with a through-hole) and the regular-grid box (cospherical
+// everywhere). Labels come from the exact inside test of each Voronoi vertex,
+// as the CLI does with OCCT's classifier.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+
+#include "analytic_shapes.hpp"
+#include "cadmedial/compute_medial.hpp"
+#include "cadmedial/medial.hpp"
+#include "cadmedial/pair_mesh.hpp"
+#include "synthetic_samples.hpp"
+
+using namespace cadmedial;
+using namespace cadmedial::testing;
+
+namespace {
+
+std::vector<std::uint8_t> exactLabels(const DelaunayVoronoi& dv, const std::function<bool(const Vec3&)>& inside) {
+  std::vector<std::uint8_t> inner(dv.cellCount(), 0);
+  for (Index c = 0; c < dv.cellCount(); ++c)
+    if (!dv.isInfinite(c)) inner[c] = inside(dv.circumcenter(c)) ? 1 : 0;
+  return inner;
+}
+
+// Triangles up to rotation of their vertex order (orientation kept).
+std::multiset<std::array<Index, 3>> orientedSet(const std::vector<std::array<Index, 3>>& tris) {
+  std::multiset<std::array<Index, 3>> out;
+  for (auto t : tris) {
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    out.insert(t);
+  }
+  return out;
+}
+
+// Every directed edge matched by its reverse: closed and consistently oriented.
+std::size_t unmatchedEdges(const std::vector<std::array<Index, 3>>& tris) {
+  std::map<std::pair<Index, Index>, int> balance;
+  for (const auto& t : tris)
+    for (int k = 0; k < 3; ++k) {
+      const Index a = t[k], b = t[(k + 1) % 3];
+      balance[{std::min(a, b), std::max(a, b)}] += a < b ? 1 : -1;
+    }
+  std::size_t bad = 0;
+  for (const auto& [e, b] : balance) bad += b != 0;
+  return bad;
+}
+
+struct Checked {
+  PairMesh mesh;
+  PairMeshValidity validity;
+};
+
+// Builds, checks validity and the iso-surfaces, and reports the volume error
+// against the exact one.
+Checked buildAndCheck(const std::string& name, const SampleSet& samples,
+                      const std::function<bool(const Vec3&)>& inside, double exactVolume, double volumeTolerance,
+                      const MedialComplex* axis = nullptr) {
+  DelaunayVoronoi dv(samples.points);
+  Checked r;
+  r.mesh = buildPairMesh(dv, samples, exactLabels(dv, inside), axis);
+  r.validity = checkPairMesh(r.mesh);
+  const PairMeshValidity& v = r.validity;
+  const PairMeshCounts& c = r.mesh.counts;
+  std::printf("%-14s samples %6zu tets %7zu (FV %zu EE %zu VF %zu) inverted %zu -> %zu (moved %zu) degenerate %zu "
+              "overlap %.1e gap %.1e volume %.6f exact %.6f (%.3f%%) %.2fs+%.2fs\n",
+              name.c_str(), samples.size(), r.mesh.size(), c.faceVertex, c.edgeEdge, c.vertexFace,
+              c.invertedBeforeRepair, c.invertedAfterRepair, c.movedNodes, v.degenerate, v.overlapError, v.gapError,
+              v.enclosedVolume, exactVolume, 100 * (v.enclosedVolume / exactVolume - 1), r.mesh.seconds,
+              r.mesh.repairSeconds);
+  EXPECT_EQ(v.inverted, 0u) << name;
+  EXPECT_EQ(c.invertedAfterRepair, 0u) << name;
+  EXPECT_LE(v.overlapError, 1e-9) << name;
+  EXPECT_LE(v.gapError, 1e-9) << name;
+  EXPECT_EQ(v.boundaryTrianglesNotInOneVertexFace, 0u) << name;
+  EXPECT_EQ(v.boundaryEdgesNotShared, 0u) << name;
+  EXPECT_TRUE(v.valid()) << name;
+  EXPECT_NEAR(v.enclosedVolume, exactVolume, volumeTolerance * exactVolume) << name;
+  EXPECT_GT(c.faceVertex, 0u);
+  EXPECT_GT(c.edgeEdge, 0u);
+  EXPECT_EQ(c.vertexFace, r.mesh.boundaryTriangles.size());
+
+  // t = 1: exactly the boundary triangles (same orientation), on the samples.
+  const IsoSurface top = isoSurface(r.mesh, 1.0);
+  std::vector<std::array<Index, 3>> topOnSamples;
+  std::map<std::array<double, 3>, Index> sampleAt;
+  for (std::size_t i = 0; i < samples.size(); ++i) sampleAt.emplace(samples.points[i], static_cast<Index>(i));
+  for (const auto& t : top.triangles) {
+    std::array<Index, 3> s{};
+    for (int k = 0; k < 3; ++k) s[k] = sampleAt.at(top.points[t[k]]);
+    topOnSamples.push_back(s);
+  }
+  EXPECT_EQ(orientedSet(topOnSamples), orientedSet(r.mesh.boundaryTriangles)) << name;
+  // In between: closed and consistently oriented.
+  for (double t : {0.25, 0.5, 0.75}) {
+    const IsoSurface iso = isoSurface(r.mesh, t);
+    EXPECT_EQ(unmatchedEdges(iso.triangles), 0u) << name << " t=" << t;
+  }
+  return r;
+}
+
+SampleSet pointsOnly(std::vector<Vec3> pts) {
+  SampleSet s;
+  s.points = std::move(pts);
+  return s;
+}
+
+}  // namespace
+
+// Counts of elements whose medial simplex is on the axis, per type.
+std::array<std::size_t, 3> linkedPerType(const PairMesh& m, std::array<std::size_t, 3>* all) {
+  std::array<std::size_t, 3> linked{0, 0, 0};
+  *all = {0, 0, 0};
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const int t = static_cast<int>(m.type[i]);
+    ++(*all)[t];
+    linked[t] += m.onSheets[i];
+  }
+  return linked;
+}
+
+TEST(PairMesh, SphereWithEveryCellCosphericalStaysValid) {
+  // All samples on one sphere: every Delaunay cell has the centre as its
+  // Voronoi vertex, so nearly all elements are flat. Still a valid partition.
+  const auto sphere = makeSphere(1.0);
+  const SampleSet s = pointsOnly(sampleSurface(*sphere, 6000, 11, 0.0));
+  // 6000 points: mean spacing ~0.05 R, the inscribed polyhedron loses ~0.1 %.
+  buildAndCheck("sphere", s, [&](const Vec3& p) { return sphere->inside(p); }, 4.0 / 3.0 * M_PI, 0.01);
+}
+
+TEST(PairMesh, EllipsoidIsAValidPartitionOfItsEnclosedVolume) {
+  const auto ellipsoid = makeEllipsoid(1.0, 0.7, 0.45);
+  const SampleSet s = pointsOnly(sampleSurface(*ellipsoid, 8000, 4, 0.0));
+  buildAndCheck("ellipsoid", s, [&](const Vec3& p) { return ellipsoid->inside(p); }, 4.0 / 3.0 * M_PI * 0.7 * 0.45,
+                0.01);
+}
+
+TEST(PairMesh, TorusKeepsItsVolumeAndOnlyPartIsOnTheFilteredAxis) {
+  const auto torus = makeTorus(1.0, 0.35);
+  const std::vector<Vec3> pts = sampleSurface(*torus, 12000, 5, 0.0);
+  const PointMedialResult axis = computeMedial(pts);
+  const Checked r = buildAndCheck("torus", pointsOnly(pts), [&](const Vec3& p) { return torus->inside(p); },
+                                  2 * M_PI * M_PI * 1.0 * 0.35 * 0.35, 0.01, &axis);
+  // The inner Voronoi diagram of a curved surface has many facets near the
+  // surface that MEDIAL filters out: their elements are not on the axis.
+  std::array<std::size_t, 3> all{};
+  const auto linked = linkedPerType(r.mesh, &all);
+  std::printf("torus on the MEDIAL axis: FV %zu/%zu EE %zu/%zu VF %zu/%zu\n", linked[0], all[0], linked[1], all[1],
+              linked[2], all[2]);
+  // (Vertex-Face elements hang on Voronoi vertices next to the surface,
+  // which a smooth shape's axis does not reach: none may be linked.)
+  for (int t = 0; t < 3; ++t) {
+    if (t != static_cast<int>(PairElementType::VertexFace)) EXPECT_GT(linked[t], 0u) << "type " << t;
+    EXPECT_LT(linked[t], all[t]) << "type " << t;
+  }
+}
+
+TEST(PairMesh, PlanarSolidsAreExactAndLinkedToTheirSheets) {
+  struct Case {
+    PlanarSolid solid;
+    double volume;
+  };
+  const std::vector<Case> cases = {{makeBox(1.0, 0.7, 0.5), 0.35},
+                                   {makeLPrism(), 3.0 * 0.8},
+                                   {makeBoxWithSquareHole(), (4.0 - 0.64) * 0.6}};
+  for (const Case& c : cases) {
+    SamplingOptions o;
+    o.spacing = 0.08;
+    const SampleSet s = samplePlanarSolid(c.solid, o);
+    const MedialResult axis = computeCadMedial(s);
+    // Flat faces are sampled exactly: only rounding separates the volumes.
+    const Checked r = buildAndCheck(c.solid.name, s, c.solid.inside, c.volume, 1e-9, &axis);
+    // Flat faces: every Delaunay edge through the interior passes the Angle
+    // condition, so (nearly) every element is on the axis; at least every
+    // kind must be.
+    std::array<std::size_t, 3> all{};
+    const auto linked = linkedPerType(r.mesh, &all);
+    for (int t = 0; t < 3; ++t) EXPECT_GT(linked[t], 0u) << c.solid.name << " type " << t;
+  }
+}
+
+TEST(PairMesh, GridBoxWithCosphericalSamplesStaysValid) {
+  const SampleSet s = gridBoxSamples(8, 0.125);
+  buildAndCheck("grid box", s, [](const Vec3& p) {
+    return p[0] > 0 && p[0] < 1 && p[1] > 0 && p[1] < 1 && p[2] > 0 && p[2] < 1;
+  }, 1.0, 1e-9);
+}
+
+TEST(PairMesh, ValidityCatchesAVoronoiNodeMovedOutside) {
+  const auto sphere = makeSphere(1.0);
+  const SampleSet s = pointsOnly(sampleSurface(*sphere, 1500, 2, 0.0));
+  DelaunayVoronoi dv(s.points);
+  PairMesh m = buildPairMesh(dv, s, exactLabels(dv, [&](const Vec3& p) { return sphere->inside(p); }));
+  ASSERT_TRUE(checkPairMesh(m).valid());
+  // Push the Voronoi node nearest to the surface well outside: its elements fold.
+  Index worst = kNoIndex;
+  double best = 0;
+  for (Index n = static_cast<Index>(m.sampleNodes); n < m.nodes.size(); ++n) {
+    const double r = std::hypot(std::hypot(m.nodes[n][0], m.nodes[n][1]), m.nodes[n][2]);
+    if (r > best) best = r, worst = n;
+  }
+  ASSERT_NE(worst, kNoIndex);
+  for (double& x : m.nodes[worst]) x *= 1.3 / best;
+  const PairMeshValidity v = checkPairMesh(m);
+  EXPECT_GT(v.inverted, 0u);
+  EXPECT_GT(v.overlapError, 1e-6);
+  EXPECT_FALSE(v.valid());
+  // The identity Σ vol = enclosed volume holds for any node positions.
+  EXPECT_LE(v.gapError, 1e-9);
+}
+
+TEST(PairMesh, EmptyAndFlatInputsGiveAnEmptyMesh) {
+  const SampleSet flat = pointsOnly({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}});
+  DelaunayVoronoi dv(flat.points);
+  const PairMesh m = buildPairMesh(dv, flat, std::vector<std::uint8_t>(dv.cellCount(), 1));
+  EXPECT_EQ(m.size(), 0u);
+  EXPECT_FALSE(checkPairMesh(m).valid());
+  EXPECT_THROW(buildPairMesh(dv, flat, std::vector<std::uint8_t>(dv.cellCount() + 1, 0)), std::invalid_argument);
+}
