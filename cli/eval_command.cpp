@@ -1,3 +1,5 @@
+// CGAL (core) headers before OCCT's.
+#include "pair_mesh_stage.hpp"
 #include "eval_command.hpp"
 
 #include <cmath>
@@ -9,6 +11,7 @@
 #include "cadmedial/brep_io.hpp"
 #include "cadmedial/errors.hpp"
 #include "medial_ply_io.hpp"
+#include "pair_mesh_io.hpp"
 
 namespace cadmedial {
 
@@ -137,12 +140,30 @@ int runEvalCommand(const EvalCommandOptions& options) {
     j["model"] = options.model;
     j["solid"] = i;
     j["medial_ply"] = plyPaths[i];
+    // The pair-mesh, when `run --pair-mesh` wrote one: read back and checked
+    // here, independently of what run reported.
+    const std::string pairBase = solidDir(options.outDir, i) + "/pairmesh";
+    bool pairPass = true;
+    if (std::filesystem::is_regular_file(pairBase + ".ele")) {
+      j["pair_mesh"] = pairMeshReport(readPairMeshTetgen(pairBase), model.solids[i]);
+      pairPass = j["pair_mesh"]["pass"].get<bool>();
+    }
     writeFileAtomically(solidDir(options.outDir, i) + "/eval.json", [&](std::ofstream& out) { out << j.dump(2) << "\n"; });
     if (!options.quiet) {
       printEvaluationRow(stdout, std::to_string(i), report);
+      if (j.contains("pair_mesh")) {
+        const auto& pm = j["pair_mesh"];
+        std::printf("       pair-mesh: %zu tetrahedra, %zu inverted, overlap %.1e, gap %.1e, volume %.6g vs exact %.6g "
+                    "(%.3f %%)  %s\n",
+                    pm["tetrahedra"].get<std::size_t>(), pm["inverted"].get<std::size_t>(),
+                    pm["overlap_error"].get<double>(), pm["gap_error"].get<double>(),
+                    pm["enclosed_volume"].get<double>(), pm["exact_volume"].get<double>(),
+                    pm["volume_error"].is_null() ? NAN : 100 * pm["volume_error"].get<double>(),
+                    pairPass ? "PASS" : "FAIL");
+      }
       std::fflush(stdout);
     }
-    allPass = allPass && report.pass.all();
+    allPass = allPass && report.pass.all() && pairPass;
   }
   if (!options.quiet) std::printf("per solid: eval.json in %s/solid_<i>/\n", options.outDir.c_str());
   return options.strict && !allPass ? kExitProcessingFailed : kExitOk;

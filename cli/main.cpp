@@ -36,6 +36,11 @@ int main(int argc, char** argv) {
                      "Angle condition threshold in degrees (default 5; 22.5 = pi/8 for point clouds and meshes)")
       ->check(CLI::Range(0.0, 89.0));
   runCmd->add_option("--rho", run.params.rho, "Ratio condition threshold (default 8)")->check(CLI::PositiveNumber);
+  runCmd->add_flag("--pair-mesh", run.pairMesh,
+                   "Also build the pair-mesh (tetrahedra between the inner Voronoi diagram and the boundary): "
+                   "pairmesh.vtu, pairmesh.node/.ele, iso_<t>.ply");
+  runCmd->add_option("--iso", run.isoValues, "Iso-parametric surfaces written with --pair-mesh, t in [0, 1] (default 0.5)")
+      ->check(CLI::Range(0.0, 1.0));
   bool noOracle = false;
   runCmd->add_flag("--no-oracle", noOracle,
                    "Skip the check of the inner/outer walk against OCCT's exact classifier (faster)");
@@ -59,6 +64,7 @@ int main(int argc, char** argv) {
   batchCmd->add_option("--theta", "As for run")->check(CLI::Range(0.0, 89.0));
   batchCmd->add_option("--rho", "As for run")->check(CLI::PositiveNumber);
   batchCmd->add_flag("--no-oracle", "As for run");
+  batchCmd->add_flag("--pair-mesh", "As for run");
 
   EvalCommandOptions eval;
   CLI::App* evalCmd =
@@ -95,7 +101,8 @@ int main(int argc, char** argv) {
       for (const char* name : {"--spacing", "--theta", "--rho"})
         if (const CLI::Option* o = batchCmd->get_option(name); o->count() > 0)
           batch.runArguments.insert(batch.runArguments.end(), {name, o->as<std::string>()});
-      if (batchCmd->get_option("--no-oracle")->count() > 0) batch.runArguments.push_back("--no-oracle");
+      for (const char* flag : {"--no-oracle", "--pair-mesh"})
+        if (batchCmd->get_option(flag)->count() > 0) batch.runArguments.push_back(flag);
       return runBatchCommand(batch);
     }
   } catch (const InputError& e) {

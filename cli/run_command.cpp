@@ -4,6 +4,7 @@
 #include "run_command.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -17,6 +18,7 @@
 #include "cadmedial/errors.hpp"
 #include "cadmedial/sampling.hpp"
 #include "medial_outputs.hpp"
+#include "pair_mesh_stage.hpp"
 #include "medial_summary.hpp"
 #include "point_input.hpp"
 #include "run_points_command.hpp"
@@ -30,7 +32,10 @@ double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(
 }  // namespace
 
 int runRunCommand(const RunCommandOptions& options) {
-  if (isPointInputPath(options.model)) return runPointMedialCommand(options);
+  if (isPointInputPath(options.model)) {
+    if (options.pairMesh) std::cerr << "warning: --pair-mesh needs a B-rep solid; ignored for " << options.model << "\n";
+    return runPointMedialCommand(options);
+  }
   auto t = Clock::now();
   LoadedModel model;
   try {
@@ -61,7 +66,9 @@ int runRunCommand(const RunCommandOptions& options) {
         classifier.Perform(gp_Pnt(p[0], p[1], p[2]), 1e-9);
         return classifier.State() == TopAbs_IN;
       };
-    const MedialResult medial = computeCadMedial(sampled.samples, options.params, oracle);
+    sampled.samples.validate();
+    const DelaunayVoronoi dv(sampled.samples.points);
+    const MedialResult medial = computeCadMedial(dv, sampled.samples, options.params, oracle);
 
     t = Clock::now();
     const std::string dir = (std::filesystem::path(options.outDir) / ("solid_" + std::to_string(i))).string();
@@ -70,6 +77,14 @@ int runRunCommand(const RunCommandOptions& options) {
     const double secondsWrite = secondsSince(t);
 
     nlohmann::json summary = medialSummaryJson(sampled.report, medial, options.params);
+    if (options.pairMesh) {
+      summary["pair_mesh"] = runPairMeshStage(dv, sampled.samples, model.solids[i], medial, options.isoValues, dir);
+      const auto& pm = summary["pair_mesh"];
+      std::printf("       pair-mesh: %zu tetrahedra, %zu inverted, volume error %.3g %%, %s\n",
+                  pm["tetrahedra"].get<std::size_t>(), pm["inverted"].get<std::size_t>(),
+                  pm["volume_error"].is_null() ? NAN : 100 * pm["volume_error"].get<double>(),
+                  pm["pass"].get<bool>() ? "valid" : "NOT VALID");
+    }
     summary["model"] = options.model;
     summary["solid"] = i;
     summary["spacing"] = sampled.samples.spacing;
@@ -87,7 +102,8 @@ int runRunCommand(const RunCommandOptions& options) {
                 seconds);
     for (const std::string& w : sampled.report.warnings) std::cerr << "warning: solid " << i << ": " << w << "\n";
   }
-  std::printf("outputs in %s (per solid: medial.ply, medial.obj, medial.ma, summary.json)\n", options.outDir.c_str());
+  std::printf("outputs in %s (per solid: medial.ply, medial.obj, medial.ma, summary.json%s)\n", options.outDir.c_str(),
+              options.pairMesh ? ", pairmesh.vtu, pairmesh.node/.ele, iso_<t>.ply" : "");
   return kExitOk;
 }
 

@@ -62,7 +62,7 @@ std::vector<Vec3> outwardSampleNormals(const SampleSet& s) {
 
 std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const SampleSet& samples,
                                             const std::vector<Vec3>& normals, double nearTolerance,
-                                            const std::vector<std::uint8_t>* wanted) {
+                                            const std::vector<std::uint8_t>* wanted, bool markNearInside) {
   const std::size_t m = dv.cellCount();
   std::vector<std::uint8_t> side(m, kCellOutside);
   // An empty ball inside the solid fits in its bounding box: centres outside
@@ -114,7 +114,7 @@ std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const Sam
       if (tree) {
         const Kernel::Point_3 p = permuted(c);  // distances are unchanged by the permutation
         if (insideMesh(p))
-          side[id] = kCellInside;
+          side[id] = markNearInside && tree->squared_distance(p) <= nearSquared ? kCellNearInside : kCellInside;
         else if (nearSquared > 0 && tree->squared_distance(p) <= nearSquared)
           side[id] = kCellNearOutside;
       } else if (insideByTangentPlanes(dv, samples, normals, cell)) {

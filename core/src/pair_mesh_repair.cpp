@@ -89,15 +89,29 @@ std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, int ro
       for (int i = 0; i < 4; ++i)
         for (int k = 0; k < 3; ++k) centroid[k] += 0.25 * m.nodes[dv.cellSample(cell, i)][k];
       const Vec3 start = m.nodes[v];
+      // Candidates: steps toward the centroid, then the positions of the
+      // Voronoi nodes it shares elements with. The latter fix nearly flat
+      // cells (four cocircular samples, e.g. triplet legs around a convex
+      // edge): their circumcenter is any point of the circle's axis, and the
+      // one picked can fall outside the span of the neighbours' vertices on
+      // that axis, folding the Voronoi polygons; a neighbour's position
+      // unfolds them (the elements between the two become flat).
+      std::vector<Vec3> targets;
+      for (double s : kSteps)
+        targets.push_back({(1 - s) * start[0] + s * centroid[0], (1 - s) * start[1] + s * centroid[1],
+                           (1 - s) * start[2] + s * centroid[2]});
+      for (Index k = offsets[v]; k < offsets[v + 1]; ++k)
+        for (Index u : m.tets[incident[k]])
+          if (u != v && !m.isSampleNode(u)) targets.push_back(m.nodes[u]);
       Vec3 best = start;
       std::size_t bestCount = before;
       double bestDeficit = deficit0;
-      for (double s : kSteps) {
-        for (int k = 0; k < 3; ++k) m.nodes[v][k] = (1 - s) * start[k] + s * centroid[k];
+      for (const Vec3& target : targets) {
+        m.nodes[v] = target;
         double deficit = 0;
         const std::size_t count = negativeAround(v, &deficit);
         if (count < bestCount || (count == bestCount && deficit < bestDeficit)) {
-          best = m.nodes[v];
+          best = target;
           bestCount = count;
           bestDeficit = deficit;
         }

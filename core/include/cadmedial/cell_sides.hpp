@@ -19,6 +19,7 @@ enum CellSide : std::uint8_t {
   kCellOutside = 0,      // outside, farther than the tolerance from the surface
   kCellInside = 1,       // inside
   kCellNearOutside = 2,  // outside but within the tolerance (chord error of the reconstruction)
+  kCellNearInside = 3,   // inside but within the tolerance (only when asked for: markNearInside)
 };
 
 // Per cell id, a CellSide. With a closed, manifold reconstruction: CGAL's
@@ -35,6 +36,7 @@ enum CellSide : std::uint8_t {
 // cells on selected facets' rings, and the point-in-mesh test is the costly part.
 std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const SampleSet& samples,
                                             const std::vector<Vec3>& normals, double nearTolerance = 0,
-                                            const std::vector<std::uint8_t>* wanted = nullptr);
+                                            const std::vector<std::uint8_t>* wanted = nullptr,
+                                            bool markNearInside = false);
 
 }  // namespace cadmedial

@@ -90,7 +90,7 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
 // elements turn positive) by the smallest step that leaves all its elements
 // non-negative, or failing that by the step that leaves the fewest negative.
 // Updates the counts; returns the number of negative elements left.
-std::size_t repairFlippedElements(PairMesh& mesh, const DelaunayVoronoi& dv, int rounds = 6);
+std::size_t repairFlippedElements(PairMesh& mesh, const DelaunayVoronoi& dv, int rounds = 12);
 
 // Signed volume of tetrahedron i (positive = valid orientation).
 double tetVolume(const PairMesh& mesh, std::size_t i);

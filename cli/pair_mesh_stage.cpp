@@ -1,0 +1,88 @@
+#include "pair_mesh_stage.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include <tbb/parallel_invoke.h>
+
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+
+#include "cadmedial/cell_classification.hpp"
+#include "pair_mesh_io.hpp"
+
+namespace cadmedial {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+}  // namespace
+
+nlohmann::json pairMeshReport(const PairMesh& mesh, const TopoDS_Shape& solid) {
+  const PairMeshValidity v = checkPairMesh(mesh);
+  GProp_GProps props;
+  BRepGProp::VolumeProperties(solid, props);
+  const double exact = std::abs(props.Mass());
+  const double volumeError = exact > 0 ? std::abs(v.enclosedVolume - exact) / exact : INFINITY;
+  std::size_t perType[3] = {0, 0, 0}, onSheets = 0;
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    ++perType[static_cast<int>(mesh.type[i])];
+    onSheets += mesh.onSheets[i];
+  }
+  const bool volumeOk = volumeError <= kPairMeshVolumeTolerance;
+  return {{"tetrahedra", mesh.size()},
+          {"face_vertex", perType[0]},
+          {"edge_edge", perType[1]},
+          {"vertex_face", perType[2]},
+          {"nodes", mesh.nodes.size()},
+          {"boundary_triangles", v.boundaryTriangles},
+          {"inverted", v.inverted},
+          {"degenerate", v.degenerate},
+          {"overlap_error", v.overlapError},
+          {"gap_error", v.gapError},
+          {"boundary_triangles_not_in_one_vertex_face", v.boundaryTrianglesNotInOneVertexFace},
+          {"boundary_edges_not_shared", v.boundaryEdgesNotShared},
+          {"enclosed_volume", v.enclosedVolume},
+          {"exact_volume", exact},
+          {"volume_error", std::isfinite(volumeError) ? nlohmann::json(volumeError) : nlohmann::json(nullptr)},
+          {"valid", v.valid()},
+          {"pass", v.valid() && volumeOk}};
+}
+
+nlohmann::json runPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& samples, const TopoDS_Shape& solid,
+                                const MedialComplex& axis, const std::vector<double>& isoValues,
+                                const std::string& dir) {
+  auto t = Clock::now();
+  const CellClassification cells = classifyCellsBySolid(dv, solid, &samples, 0.5 * samples.spacing);
+  const double classifySeconds = secondsSince(t);
+  const PairMesh mesh = buildPairMesh(dv, samples, cells.inner, &axis);
+
+  t = Clock::now();
+  nlohmann::json report = pairMeshReport(mesh, solid);
+  const double checkSeconds = secondsSince(t);
+  report["on_sheets"] = std::count(mesh.onSheets.begin(), mesh.onSheets.end(), 1);
+  report["cells_classified_exactly"] = cells.exactQueries;
+  report["cells_decided_by_reconstruction"] = cells.decidedByMesh;
+  report["inverted_before_repair"] = mesh.counts.invertedBeforeRepair;
+  report["moved_voronoi_nodes"] = mesh.counts.movedNodes;
+  report["inverted_after_repair"] = mesh.counts.invertedAfterRepair;
+
+  t = Clock::now();
+  std::vector<std::string> isoFiles;
+  tbb::parallel_invoke([&] { writePairMeshVtu(dir + "/pairmesh.vtu", mesh); },
+                       [&] { writePairMeshTetgen(dir + "/pairmesh", mesh); },
+                       [&] {
+                         for (double iso : isoValues)
+                           writeIsoSurfacePly(dir + "/" + isoSurfaceFileName(iso), isoSurface(mesh, iso));
+                       });
+  for (double iso : isoValues) isoFiles.push_back(isoSurfaceFileName(iso));
+  report["iso_files"] = isoFiles;
+  report["seconds"] = {{"classify_cells", classifySeconds},
+                       {"build", mesh.seconds},
+                       {"repair", mesh.repairSeconds},
+                       {"check", checkSeconds},
+                       {"write", secondsSince(t)}};
+  return report;
+}
+
+}  // namespace cadmedial
