@@ -145,8 +145,14 @@ int runEvalCommand(const EvalCommandOptions& options) {
     const std::string pairBase = solidDir(options.outDir, i) + "/pairmesh";
     bool pairPass = true;
     if (std::filesystem::is_regular_file(pairBase + ".ele")) {
-      j["pair_mesh"] = pairMeshReport(readPairMeshTetgen(pairBase), model.solids[i]);
-      pairPass = j["pair_mesh"]["pass"].get<bool>();
+      const PairMesh pairMesh = readPairMeshTetgen(pairBase);
+      j["pair_mesh"] = pairMeshReport(pairMesh, model.solids[i]);
+      // The iso-surface halfway between axis and boundary must not cut itself.
+      const IsoSurfaceIntersections iso = isoSurfaceSelfIntersections(isoSurface(pairMesh, 0.5));
+      j["pair_mesh"]["iso_0.5_self_intersections"] = iso.intersectingPairs;
+      j["pair_mesh"]["iso_0.5_degenerate_triangles"] = iso.degenerateTriangles;
+      pairPass = j["pair_mesh"]["pass"].get<bool>() && iso.intersectingPairs == 0;
+      j["pair_mesh"]["pass"] = pairPass;
     }
     writeFileAtomically(solidDir(options.outDir, i) + "/eval.json", [&](std::ofstream& out) { out << j.dump(2) << "\n"; });
     if (!options.quiet) {
@@ -154,12 +160,12 @@ int runEvalCommand(const EvalCommandOptions& options) {
       if (j.contains("pair_mesh")) {
         const auto& pm = j["pair_mesh"];
         std::printf("       pair-mesh: %zu tetrahedra, %zu inverted, overlap %.1e, gap %.1e, volume %.6g vs exact %.6g "
-                    "(%.3f %%)  %s\n",
+                    "(%.3f %%), iso 0.5 self-intersections %zu  %s\n",
                     pm["tetrahedra"].get<std::size_t>(), pm["inverted"].get<std::size_t>(),
                     pm["overlap_error"].get<double>(), pm["gap_error"].get<double>(),
                     pm["enclosed_volume"].get<double>(), pm["exact_volume"].get<double>(),
                     pm["volume_error"].is_null() ? NAN : 100 * pm["volume_error"].get<double>(),
-                    pairPass ? "PASS" : "FAIL");
+                    pm["iso_0.5_self_intersections"].get<std::size_t>(), pairPass ? "PASS" : "FAIL");
       }
       std::fflush(stdout);
     }

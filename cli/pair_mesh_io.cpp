@@ -64,7 +64,7 @@ void writePairMeshVtu(const std::string& path, const PairMesh& m) {
     s += '\n';
   }
   s += "</DataArray>\n</CellData>\n<PointData>\n<DataArray type=\"UInt8\" Name=\"boundary\" format=\"ascii\">\n";
-  for (std::size_t n = 0; n < m.nodes.size(); ++n) s += n < m.sampleNodes ? "1\n" : "0\n";
+  for (std::size_t n = 0; n < m.nodes.size(); ++n) s += m.isBoundaryNode(static_cast<Index>(n)) ? "1\n" : "0\n";
   s += "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
   writeFileAtomically(path, [&](std::ofstream& out) { out << s; });
 }
@@ -72,14 +72,14 @@ void writePairMeshVtu(const std::string& path, const PairMesh& m) {
 void writePairMeshTetgen(const std::string& basePath, const PairMesh& m) {
   std::string node;
   node.reserve(64 * m.nodes.size() + 64);
-  node += "# cadmedial pair-mesh nodes: index x y z boundary(1 = sample, 0 = Voronoi node)\n";
+  node += "# cadmedial pair-mesh nodes: index x y z boundary(1 = sample or split point on a boundary edge, 0 = Voronoi node)\n";
   appendInteger(node, m.nodes.size());
   node += " 3 0 1\n";
   for (std::size_t n = 0; n < m.nodes.size(); ++n) {
     appendInteger(node, n);
     node += ' ';
     appendPoint(node, m.nodes[n]);
-    node += n < m.sampleNodes ? " 1\n" : " 0\n";
+    node += m.isBoundaryNode(static_cast<Index>(n)) ? " 1\n" : " 0\n";
   }
   std::string ele;
   ele.reserve(48 * m.size() + 64);
@@ -163,6 +163,7 @@ PairMesh readPairMeshTetgen(const std::string& basePath) {
     malformed(nodePath, "bad header (expected 'N 3 0 1')");
   m.nodes.resize(count);
   m.nodeCell.assign(count, kNoIndex);
+  m.boundaryNode.assign(count, 0);
   bool voronoiSeen = false;
   for (std::size_t n = 0; n < count; ++n) {
     std::size_t index = 0;
@@ -171,9 +172,11 @@ PairMesh readPairMeshTetgen(const std::string& basePath) {
     if (!dataLine(nodes, line) || !(line >> index >> p[0] >> p[1] >> p[2] >> boundary) || index != n)
       malformed(nodePath, "bad node line " + std::to_string(n));
     m.nodes[n] = p;
-    if (boundary == 1 && voronoiSeen) malformed(nodePath, "samples must come before Voronoi nodes");
-    if (boundary == 1) m.sampleNodes = n + 1;
-    else voronoiSeen = true;
+    if (boundary != 0 && boundary != 1) malformed(nodePath, "bad boundary marker on node " + std::to_string(n));
+    m.boundaryNode[n] = static_cast<std::uint8_t>(boundary);
+    // Samples first; boundary nodes after the Voronoi nodes are split points.
+    if (boundary == 1 && !voronoiSeen) m.sampleNodes = n + 1;
+    if (boundary == 0) voronoiSeen = true;
   }
   int corners = 0;
   if (!dataLine(eles, line) || !(line >> count >> corners >> attributes) || corners != 4 || attributes != 1)

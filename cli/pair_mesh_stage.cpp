@@ -65,6 +65,7 @@ nlohmann::json runPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& samp
   report["cells_decided_by_reconstruction"] = cells.decidedByMesh;
   report["inverted_before_repair"] = mesh.counts.invertedBeforeRepair;
   report["moved_voronoi_nodes"] = mesh.counts.movedNodes;
+  report["split_boundary_edges"] = mesh.counts.splitEdges;
   report["inverted_after_repair"] = mesh.counts.invertedAfterRepair;
 
   t = Clock::now();

@@ -1,6 +1,8 @@
 #include "cadmedial/pair_mesh.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <unordered_map>
 #include <stdexcept>
 
 #include "cadmedial/edge_table.hpp"
@@ -55,17 +57,20 @@ class Builder {
     m_.nodes = samples.points;
     m_.sampleNodes = samples.points.size();
     m_.nodeCell.assign(m_.sampleNodes, kNoIndex);
+    m_.boundaryNode.assign(m_.sampleNodes, 1);
     nodeOfCell_.assign(dv.cellCount(), kNoIndex);
     for (Index c = 0; c < dv.cellCount(); ++c)
       if (isInner(c)) {
         nodeOfCell_[c] = static_cast<Index>(m_.nodes.size());
         m_.nodes.push_back(dv.circumcenter(c));
         m_.nodeCell.push_back(c);
+        m_.boundaryNode.push_back(0);
         ++m_.counts.innerCells;
       }
   }
 
   PairMesh build() {
+    weldNearlyCoincidentVoronoiNodes();
     if (dv_.dimension() == 3) {
       edgeElements();
       vertexFaceElements();
@@ -156,6 +161,51 @@ class Builder {
     }
   }
 
+  // Nearly cospherical samples (grids on planar faces, parameter grids on
+  // tori) give Voronoi vertices that coincide in exact arithmetic but differ
+  // by rounding; the elements between them are slivers of either sign, and
+  // their iso-surface cuts cross. Such nodes get one position (the first
+  // seen), within 1e-8 of the samples' extent, which makes those elements
+  // exactly flat instead.
+  void weldNearlyCoincidentVoronoiNodes() {
+    if (m_.nodes.size() <= m_.sampleNodes) return;
+    Vec3 lo = m_.nodes[0], hi = m_.nodes[0];
+    for (std::size_t i = 0; i < m_.sampleNodes; ++i)
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], m_.nodes[i][k]), hi[k] = std::max(hi[k], m_.nodes[i][k]);
+    const double extent = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                                    (hi[2] - lo[2]) * (hi[2] - lo[2]));
+    const double tolerance = 1e-8 * extent;
+    if (!(tolerance > 0)) return;
+    auto cellOf = [&](const Vec3& p, int k) { return static_cast<std::int64_t>(std::floor(p[k] / tolerance)); };
+    auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) {
+      return (static_cast<std::uint64_t>(x) * 73856093u) ^ (static_cast<std::uint64_t>(y) * 19349663u) ^
+             (static_cast<std::uint64_t>(z) * 83492791u);
+    };
+    std::unordered_multimap<std::uint64_t, Index> grid;
+    grid.reserve(m_.nodes.size() - m_.sampleNodes);
+    for (Index n = static_cast<Index>(m_.sampleNodes); n < m_.nodes.size(); ++n) {
+      Vec3& p = m_.nodes[n];
+      const std::int64_t cx = cellOf(p, 0), cy = cellOf(p, 1), cz = cellOf(p, 2);
+      bool welded = false;
+      for (int dx = -1; dx <= 1 && !welded; ++dx)
+        for (int dy = -1; dy <= 1 && !welded; ++dy)
+          for (int dz = -1; dz <= 1 && !welded; ++dz) {
+            const auto range = grid.equal_range(key(cx + dx, cy + dy, cz + dz));
+            for (auto it = range.first; it != range.second; ++it) {
+              const Vec3& q = m_.nodes[it->second];
+              if (std::abs(q[0] - p[0]) <= tolerance && std::abs(q[1] - p[1]) <= tolerance &&
+                  std::abs(q[2] - p[2]) <= tolerance) {
+                if (q != p) ++m_.counts.weldedNodes;
+                p = q;
+                welded = true;
+                break;
+              }
+            }
+          }
+      if (!welded) grid.emplace(key(cx, cy, cz), n);
+    }
+  }
+
   Index node(Cell_handle c) const { return nodeOfCell_[DelaunayVoronoi::cellId(c)]; }
 
   // Vertex-Face: every facet of an inner cell whose neighbour is outer.
@@ -208,7 +258,7 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
     repairFlippedElements(mesh, dv);
   } else {
     std::size_t negative = 0;
-    for (std::size_t i = 0; i < mesh.size(); ++i) negative += tetVolume(mesh, i) < -negligibleVolume(mesh, i) ? 1 : 0;
+    for (std::size_t i = 0; i < mesh.size(); ++i) negative += isInverted(mesh, i) ? 1 : 0;
     mesh.counts.invertedBeforeRepair = mesh.counts.invertedAfterRepair = negative;
   }
   mesh.repairSeconds = watch.seconds();

@@ -4,10 +4,13 @@
 // the inside of its own Delaunay cell turns its Vertex-Face elements positive
 // (the centroid of the cell is on the inner side of each of its facets), and
 // the step is kept as small as the neighbouring elements allow.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
 #include <algorithm>
 #include <cmath>
 
 #include "cadmedial/pair_mesh.hpp"
+#include "pair_mesh_node_position.hpp"
 
 namespace cadmedial {
 
@@ -33,6 +36,33 @@ double tetVolume(const PairMesh& m, std::size_t i) {
   return orient(m.nodes[t[0]], m.nodes[t[1]], m.nodes[t[2]], m.nodes[t[3]]);
 }
 
+bool isInverted(const PairMesh& m, std::size_t i) {
+  using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  const auto& t = m.tets[i];
+  auto point = [&](Index n) { return Point(m.nodes[n][0], m.nodes[n][1], m.nodes[n][2]); };
+  return CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3])) == CGAL::NEGATIVE;
+}
+
+namespace {
+
+// What the repair removes: inverted elements, and flat ones whose four
+// corners are distinct points (their iso-surface cut is a flat fin lying on
+// the neighbours' faces, which crosses their cuts). Flat elements from
+// coincident Voronoi nodes cut to nothing and are fine.
+bool needsRepair(const PairMesh& m, std::size_t i) {
+  using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  const auto& t = m.tets[i];
+  auto point = [&](Index n) { return Point(m.nodes[n][0], m.nodes[n][1], m.nodes[n][2]); };
+  const auto o = CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3]));
+  if (o != CGAL::ZERO) return o == CGAL::NEGATIVE;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b)
+      if (m.nodes[t[a]] == m.nodes[t[b]]) return false;
+  return true;
+}
+
+}  // namespace
+
 double negligibleVolume(const PairMesh& m, std::size_t i) {
   const auto& t = m.tets[i];
   double longest = 0;
@@ -41,9 +71,26 @@ double negligibleVolume(const PairMesh& m, std::size_t i) {
   return 1e-12 * longest * std::sqrt(longest);
 }
 
-std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, int rounds) {
+namespace {
+
+std::size_t countNeedingRepair(const PairMesh& m) {
+  std::size_t bad = 0;
+  for (std::size_t i = 0; i < m.tets.size(); ++i) bad += needsRepair(m, i) ? 1 : 0;
+  return bad;
+}
+
+std::size_t countNegative(const PairMesh& m) {
+  std::size_t bad = 0;
+  for (std::size_t i = 0; i < m.tets.size(); ++i) bad += isInverted(m, i) ? 1 : 0;
+  return bad;
+}
+
+// Rounds of Voronoi node moves (first case of §4.1); marks moved nodes.
+// Returns the number of negative elements left.
+std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds, std::vector<std::uint8_t>& moved) {
   const std::size_t n = m.nodes.size();
-  auto negative = [&m](std::size_t i) { return tetVolume(m, i) < -negligibleVolume(m, i); };
+  moved.resize(n, 0);
+  auto negative = [&m](std::size_t i) { return needsRepair(m, i); };
   // Node -> incident tetrahedra (CSR).
   std::vector<Index> offsets(n + 1, 0), incident;
   for (const auto& t : m.tets)
@@ -58,26 +105,101 @@ std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, int ro
   auto negativeAround = [&](Index v, double* deficit) {
     std::size_t count = 0;
     for (Index k = offsets[v]; k < offsets[v + 1]; ++k) {
-      const double vol = tetVolume(m, incident[k]), eps = negligibleVolume(m, incident[k]);
-      if (vol < -eps) {
+      if (needsRepair(m, incident[k])) {
         ++count;
-        if (deficit) *deficit -= vol;
+        if (deficit) *deficit -= tetVolume(m, incident[k]);
       }
     }
     return count;
   };
 
-  std::size_t bad = 0;
-  for (std::size_t i = 0; i < m.tets.size(); ++i) bad += negative(i) ? 1 : 0;
-  m.counts.invertedBeforeRepair = bad;
-  std::vector<std::uint8_t> moved(n, 0);
+  // Negative elements around a set of nodes, each element counted once.
+  std::vector<std::uint32_t> seen(m.tets.size(), 0);
+  std::uint32_t stamp = 0;
+  auto negativeAroundSet = [&](const std::vector<Index>& set, double* deficit) {
+    ++stamp;
+    std::size_t count = 0;
+    for (Index v : set)
+      for (Index k = offsets[v]; k < offsets[v + 1]; ++k) {
+        const Index i = incident[k];
+        if (seen[i] == stamp) continue;
+        seen[i] = stamp;
+        if (needsRepair(m, i)) {
+          ++count;
+          *deficit -= tetVolume(m, i);
+        }
+      }
+    return count;
+  };
+  // Nearly cospherical samples (the symmetric triplets along a convex edge)
+  // have Voronoi vertices that should coincide; rounding of the samples
+  // spreads them by ~1 % of the spacing in an arbitrary order, which folds
+  // the short Voronoi edges between them. Moving a whole cluster of such
+  // nodes (reachable through elements, within 5 % of the element size of
+  // the seed) to one point makes the elements between them flat.
+  auto collapseNodeClusters = [&]() {
+    for (std::size_t i = 0; i < m.tets.size(); ++i) {
+      if (!negative(i)) continue;
+      const double size = std::cbrt(negligibleVolume(m, i) * 1e12);  // longest edge
+      std::vector<Index> cluster;
+      for (Index v : m.tets[i])
+        if (!m.isBoundaryNode(v)) cluster.push_back(v);
+      if (cluster.empty()) continue;
+      const Vec3 seed = m.nodes[cluster[0]];
+      for (std::size_t q = 0; q < cluster.size() && cluster.size() < 32; ++q)
+        for (Index k = offsets[cluster[q]]; k < offsets[cluster[q] + 1]; ++k)
+          for (Index u : m.tets[incident[k]])
+            if (!m.isBoundaryNode(u) && std::find(cluster.begin(), cluster.end(), u) == cluster.end() &&
+                squaredLength(m.nodes[u], seed) < 0.0025 * size * size)
+              cluster.push_back(u);
+      std::vector<Vec3> start;
+      Vec3 centroid{0, 0, 0};
+      for (Index v : cluster) {
+        start.push_back(m.nodes[v]);
+        for (int k = 0; k < 3; ++k) centroid[k] += m.nodes[v][k] / static_cast<double>(cluster.size());
+      }
+      double deficit0 = 0;
+      const std::size_t before = negativeAroundSet(cluster, &deficit0);
+      std::vector<Vec3> targets{centroid};
+      targets.insert(targets.end(), start.begin(), start.end());
+      std::size_t bestCount = before;
+      double bestDeficit = deficit0;
+      const Vec3* best = nullptr;
+      for (const Vec3& target : targets) {
+        for (Index v : cluster) m.nodes[v] = target;
+        double deficit = 0;
+        const std::size_t count = negativeAroundSet(cluster, &deficit);
+        if (count < bestCount || (count == bestCount && deficit < bestDeficit)) {
+          best = &target;
+          bestCount = count;
+          bestDeficit = deficit;
+        }
+      }
+      for (std::size_t k = 0; k < cluster.size(); ++k) {
+        m.nodes[cluster[k]] = best && bestCount < before ? *best : start[k];
+        if (best && bestCount < before) moved[cluster[k]] = 1;
+      }
+    }
+  };
+
+  auto bestPosition = [&](Index v) {
+    std::vector<std::array<Index, 4>> elements;
+    double far = 0;
+    for (Index k = offsets[v]; k < offsets[v + 1]; ++k) {
+      elements.push_back(m.tets[incident[k]]);
+      for (Index u : m.tets[incident[k]]) far = std::max(far, squaredLength(m.nodes[v], m.nodes[u]));
+    }
+    return nearestValidNodePosition(m.nodes, v, elements, 0.5 * std::sqrt(far));
+  };
+
+  std::size_t bad = countNeedingRepair(m);
   static constexpr double kSteps[] = {0.03125, 0.0625, 0.125, 0.25, 0.5, 0.75, 1.0};
   for (int round = 0; round < rounds && bad > 0; ++round) {
     std::vector<Index> candidates;
     for (std::size_t i = 0; i < m.tets.size(); ++i)
       if (negative(i))
         for (Index v : m.tets[i])
-          if (!m.isSampleNode(v)) candidates.push_back(v);
+          if (!m.isBoundaryNode(v)) candidates.push_back(v);
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
     for (Index v : candidates) {
@@ -96,13 +218,21 @@ std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, int ro
       // one picked can fall outside the span of the neighbours' vertices on
       // that axis, folding the Voronoi polygons; a neighbour's position
       // unfolds them (the elements between the two become flat).
+      // First the nearest position where all its elements are positive (an
+      // LP, when there is one), then steps toward the centroid and the
+      // neighbours' positions, keeping the one with the fewest negative.
       std::vector<Vec3> targets;
+      if (const auto p = bestPosition(v)) targets.push_back(*p);
       for (double s : kSteps)
         targets.push_back({(1 - s) * start[0] + s * centroid[0], (1 - s) * start[1] + s * centroid[1],
                            (1 - s) * start[2] + s * centroid[2]});
       for (Index k = offsets[v]; k < offsets[v + 1]; ++k)
         for (Index u : m.tets[incident[k]])
-          if (u != v && !m.isSampleNode(u)) targets.push_back(m.nodes[u]);
+          if (u != v && !m.isBoundaryNode(u)) {
+            const Vec3& q = m.nodes[u];
+            targets.push_back(q);
+            targets.push_back({(start[0] + q[0]) / 2, (start[1] + q[1]) / 2, (start[2] + q[2]) / 2});
+          }
       Vec3 best = start;
       std::size_t bestCount = before;
       double bestDeficit = deficit0;
@@ -120,9 +250,24 @@ std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, int ro
       m.nodes[v] = best;
       if (best != start) moved[v] = 1;
     }
-    bad = 0;
-    for (std::size_t i = 0; i < m.tets.size(); ++i) bad += negative(i) ? 1 : 0;
+    // Only when single moves have stalled (round past half): collapsing
+    // clusters trades elements and is the rougher tool.
+    if (2 * round >= rounds) collapseNodeClusters();
+    bad = countNeedingRepair(m);
   }
+  return bad;
+}
+
+}  // namespace
+
+std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, int rounds) {
+  m.counts.invertedBeforeRepair = countNegative(m);
+  std::vector<std::uint8_t> moved;
+  if (moveVoronoiNodes(m, dv, rounds, moved) > 0) {
+    m.counts.splitEdges = splitBoundaryEdges(m);
+    if (m.counts.splitEdges > 0) moveVoronoiNodes(m, dv, rounds, moved);
+  }
+  const std::size_t bad = countNegative(m);
   m.counts.movedNodes = static_cast<std::size_t>(std::count(moved.begin(), moved.end(), 1));
   m.counts.invertedAfterRepair = bad;
   return bad;

@@ -48,9 +48,9 @@ PairMeshValidity checkPairMesh(const PairMesh& m) {
   // Plain double sums: over 10^6 terms the rounding stays near 1e-13
   // relative, far below the 1e-9 the volume identity is held to.
   for (std::size_t i = 0; i < m.size(); ++i) {
-    const double vol = tetVolume(m, i), eps = negligibleVolume(m, i);
-    if (vol < -eps) ++v.inverted;
-    else if (std::abs(vol) <= eps) ++v.degenerate;
+    const double vol = tetVolume(m, i);
+    if (isInverted(m, i)) ++v.inverted;
+    else if (std::abs(vol) <= negligibleVolume(m, i)) ++v.degenerate;
     v.sumVolume += vol;
     v.sumAbsVolume += std::abs(vol);
   }

@@ -68,10 +68,10 @@ Checked buildAndCheck(const std::string& name, const SampleSet& samples,
   r.validity = checkPairMesh(r.mesh);
   const PairMeshValidity& v = r.validity;
   const PairMeshCounts& c = r.mesh.counts;
-  std::printf("%-14s samples %6zu tets %7zu (FV %zu EE %zu VF %zu) inverted %zu -> %zu (moved %zu) degenerate %zu "
+  std::printf("%-14s samples %6zu tets %7zu (FV %zu EE %zu VF %zu) inverted %zu -> %zu (moved %zu, split %zu) degenerate %zu "
               "overlap %.1e gap %.1e volume %.6f exact %.6f (%.3f%%) %.2fs+%.2fs\n",
               name.c_str(), samples.size(), r.mesh.size(), c.faceVertex, c.edgeEdge, c.vertexFace,
-              c.invertedBeforeRepair, c.invertedAfterRepair, c.movedNodes, v.degenerate, v.overlapError, v.gapError,
+              c.invertedBeforeRepair, c.invertedAfterRepair, c.movedNodes, c.splitEdges, v.degenerate, v.overlapError, v.gapError,
               v.enclosedVolume, exactVolume, 100 * (v.enclosedVolume / exactVolume - 1), r.mesh.seconds,
               r.mesh.repairSeconds);
   EXPECT_EQ(v.inverted, 0u) << name;
@@ -86,21 +86,25 @@ Checked buildAndCheck(const std::string& name, const SampleSet& samples,
   EXPECT_GT(c.edgeEdge, 0u);
   EXPECT_EQ(c.vertexFace, r.mesh.boundaryTriangles.size());
 
-  // t = 1: exactly the boundary triangles (same orientation), on the samples.
+  // t = 1: exactly the boundary triangles (same orientation), on the
+  // boundary nodes (the samples and any split points).
   const IsoSurface top = isoSurface(r.mesh, 1.0);
   std::vector<std::array<Index, 3>> topOnSamples;
   std::map<std::array<double, 3>, Index> sampleAt;
   for (std::size_t i = 0; i < samples.size(); ++i) sampleAt.emplace(samples.points[i], static_cast<Index>(i));
+  for (Index n = static_cast<Index>(samples.size()); n < r.mesh.nodes.size(); ++n)
+    if (r.mesh.isBoundaryNode(n)) sampleAt.emplace(r.mesh.nodes[n], n);
   for (const auto& t : top.triangles) {
     std::array<Index, 3> s{};
     for (int k = 0; k < 3; ++k) s[k] = sampleAt.at(top.points[t[k]]);
     topOnSamples.push_back(s);
   }
   EXPECT_EQ(orientedSet(topOnSamples), orientedSet(r.mesh.boundaryTriangles)) << name;
-  // In between: closed and consistently oriented.
+  // In between: closed, consistently oriented, and never cutting itself.
   for (double t : {0.25, 0.5, 0.75}) {
     const IsoSurface iso = isoSurface(r.mesh, t);
     EXPECT_EQ(unmatchedEdges(iso.triangles), 0u) << name << " t=" << t;
+    EXPECT_EQ(isoSurfaceSelfIntersections(iso).intersectingPairs, 0u) << name << " t=" << t;
   }
   return r;
 }

@@ -40,22 +40,27 @@ const char* pairElementTypeName(PairElementType t);
 
 struct PairMeshCounts {
   std::size_t innerCells = 0;
+  std::size_t weldedNodes = 0;  // Voronoi nodes moved (< 1e-7 of the extent) onto a nearly coincident one
   std::size_t boundaryTriangles = 0;
   std::size_t faceVertex = 0, edgeEdge = 0, vertexFace = 0;  // tetrahedra of each type
   // Repair (seed 003 §4.1): Voronoi nodes moved toward the inside of their
   // Delaunay cell, and elements negative before / after it.
   std::size_t invertedBeforeRepair = 0;
   std::size_t movedNodes = 0;
+  // Boundary edges split at a point of their Voronoi cut face (seed 003
+  // §4.1, second case): each adds one boundary node.
+  std::size_t splitEdges = 0;
   std::size_t invertedAfterRepair = 0;
 };
 
 struct PairMesh {
-  // Nodes: node i < sampleNodes is sample i (boundary vertex); the others are
-  // Voronoi vertices, one per inner cell, at nodes[...] (the circumcenter,
-  // unless the repair moved it).
+  // Nodes: node i < sampleNodes is sample i (boundary vertex); then the
+  // Voronoi vertices, one per inner cell (the circumcenter, unless the repair
+  // moved it); then the boundary nodes the repair put on split edges.
   std::vector<Vec3> nodes;
   std::size_t sampleNodes = 0;
-  std::vector<Index> nodeCell;        // per node: its Delaunay cell, kNoIndex for samples
+  std::vector<Index> nodeCell;        // per node: its Delaunay cell, kNoIndex for boundary nodes
+  std::vector<std::uint8_t> boundaryNode;  // per node: 1 sample or split point, 0 Voronoi node
   std::vector<std::array<Index, 4>> tets;
   std::vector<PairElementType> type;
   // Dual data per tetrahedron (kNoIndex where unused):
@@ -76,6 +81,7 @@ struct PairMesh {
 
   std::size_t size() const { return tets.size(); }
   bool isSampleNode(Index n) const { return n < sampleNodes; }
+  bool isBoundaryNode(Index n) const { return boundaryNode[n] != 0; }
 };
 
 // Builds the pair-mesh from the triangulation and per-cell inner labels
@@ -89,20 +95,35 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
 // toward the centroid of its Delaunay cell (inside the cell: its Vertex-Face
 // elements turn positive) by the smallest step that leaves all its elements
 // non-negative, or failing that by the step that leaves the fewest negative.
+// Then every boundary edge with a negative Edge-Edge element that node moves
+// could not fix is split (splitBoundaryEdges) and the nodes are moved again.
 // Updates the counts; returns the number of negative elements left.
 std::size_t repairFlippedElements(PairMesh& mesh, const DelaunayVoronoi& dv, int rounds = 12);
 
+// Seed 003 §4.1, second case: a boundary edge ab that misses its Voronoi cut
+// face (the chain of inner Voronoi nodes around it) folds some of its
+// Edge-Edge elements. It is replaced by a -> m -> b, m a new boundary node
+// near the cut face; each Edge-Edge element becomes two, and the two boundary
+// triangles on ab become polygons, re-triangulated (every triangulation of
+// the polygon is tried) into Vertex-Face elements on the same Voronoi node.
+// A split is kept only when it leaves fewer negative elements. Returns the
+// number of edges split.
+std::size_t splitBoundaryEdges(PairMesh& mesh);
+
 // Signed volume of tetrahedron i (positive = valid orientation).
 double tetVolume(const PairMesh& mesh, std::size_t i);
-// A volume counts as negative below -negligible: 1e-12 × (longest edge)³,
-// the rounding of the determinant, not geometry.
+// Inverted: negative orientation by CGAL's exact predicate, however small
+// (the iso-surfaces are checked with exact predicates too, so a sliver of
+// rounding size with the wrong sign would show there as a crossing).
+bool isInverted(const PairMesh& mesh, std::size_t i);
+// 1e-12 × (longest edge)³: below it a volume is reported as degenerate.
 double negligibleVolume(const PairMesh& mesh, std::size_t i);
 
 // DESIGN.md §6 pair-mesh validity.
 struct PairMeshValidity {
   std::size_t elements = 0;
-  std::size_t inverted = 0;     // volume < -negligible
-  std::size_t degenerate = 0;   // |volume| <= negligible
+  std::size_t inverted = 0;     // negative orientation (exact)
+  std::size_t degenerate = 0;   // not inverted, |volume| <= negligible
   double sumVolume = 0;         // Σ vol
   double sumAbsVolume = 0;      // Σ |vol|
   double enclosedVolume = 0;    // enclosed by the boundary triangles (divergence theorem)
@@ -131,5 +152,17 @@ struct IsoSurface {
   std::vector<std::array<Index, 3>> triangles;
 };
 IsoSurface isoSurface(const PairMesh& mesh, double t);
+
+// CGAL's self-intersection test on an iso-surface: pairs of triangles that
+// meet other than along the edges and vertices they share (0 for a valid
+// pair-mesh at any t in (0, 1)). Cuts of flat elements (cospherical samples
+// make Voronoi nodes coincide) are counted apart, not as intersections:
+// triangles that collapse once equal positions are welded, and pairs of
+// opposite copies of one triangle.
+struct IsoSurfaceIntersections {
+  std::size_t intersectingPairs = 0;
+  std::size_t degenerateTriangles = 0;
+};
+IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso);
 
 }  // namespace cadmedial

@@ -1,0 +1,340 @@
+// Seed 003 §4.1, second case of flipped elements: a boundary Delaunay edge ab
+// that does not cross its Voronoi cut face. Every node of the cut face's
+// chain (the inner Voronoi nodes around ab) lies near the bisector plane of
+// ab, and the Edge-Edge element (a, b, vi, vj) is positive when the edge's
+// crossing point with that plane sees the chain segment vi vj turn the right
+// way. When it does not, the edge is bent at a new boundary node m chosen
+// inside the cut face: (a, b, vi, vj) becomes (a, m, vi, vj) + (m, b, vi, vj),
+// which are positive when m sees vi vj correctly, and the two boundary
+// triangles on ab become polygons a m b ..., re-triangulated into Vertex-Face
+// elements on the same Voronoi node. Faces stay shared pairwise, so the
+// signed volumes still add up to the volume inside the (slightly bent)
+// boundary.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+#include "cadmedial/edge_table.hpp"
+#include "cadmedial/pair_mesh.hpp"
+
+namespace cadmedial {
+
+namespace {
+
+// A boundary triangle (outward corners) with the Voronoi node of its
+// Vertex-Face elements, the split node on each of its edges (corner k to
+// k + 1) and the elements that currently fill it.
+struct BoundaryPolygon {
+  std::array<Index, 3> corners;
+  Index apex;
+  std::array<Index, 3> splits{kNoIndex, kNoIndex, kNoIndex};
+  std::vector<std::size_t> elements;
+  std::vector<std::array<Index, 3>> triangles;  // current triangulation
+};
+
+// Every triangulation of the convex polygon 0..n-1 (n <= 6: at most 14),
+// as triangles of polygon positions in the polygon's orientation.
+using Triangulation = std::vector<std::array<int, 3>>;
+std::vector<Triangulation> triangulations(int i, int j) {
+  if (j - i < 2) return {Triangulation{}};
+  std::vector<Triangulation> all;
+  for (int k = i + 1; k < j; ++k)
+    for (const Triangulation& left : triangulations(i, k))
+      for (const Triangulation& right : triangulations(k, j)) {
+        Triangulation t = left;
+        t.insert(t.end(), right.begin(), right.end());
+        t.push_back({i, k, j});
+        all.push_back(std::move(t));
+      }
+  return all;
+}
+
+const std::vector<Triangulation>& triangulationsOf(int n) {
+  static const std::vector<std::vector<Triangulation>> table = [] {
+    std::vector<std::vector<Triangulation>> t(7);
+    for (int k = 3; k <= 6; ++k) t[k] = triangulations(0, k - 1);
+    return t;
+  }();
+  return table[n];
+}
+
+double orient(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const double w[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+  return (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])) /
+         6.0;
+}
+
+// Negative elements and how negative, for comparing candidate repairs.
+struct Score {
+  std::size_t negative = 0;
+  double deficit = 0;
+  bool operator<(const Score& o) const {
+    return negative != o.negative ? negative < o.negative : deficit < o.deficit;
+  }
+};
+
+void addToScore(Score& s, const std::vector<Vec3>& nodes, const std::array<Index, 4>& t) {
+  using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  auto point = [&](Index n) { return Point(nodes[n][0], nodes[n][1], nodes[n][2]); };
+  if (CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3])) == CGAL::NEGATIVE) {
+    ++s.negative;
+    s.deficit -= orient(nodes[t[0]], nodes[t[1]], nodes[t[2]], nodes[t[3]]);
+  }
+}
+
+class EdgeSplitter {
+ public:
+  explicit EdgeSplitter(PairMesh& m) : m_(m) {}
+
+  std::size_t run() {
+    collectEdges();
+    if (edges_.empty()) return 0;
+    collectPolygons();
+    std::size_t split = 0;
+    for (const auto& [key, ee] : edges_) split += trySplit(key, ee) ? 1 : 0;
+    if (split > 0) rebuild();
+    return split;
+  }
+
+ private:
+  // Boundary edges {a, b} (a < b) with a negative Edge-Edge element, and all
+  // the Edge-Edge elements of those edges.
+  void collectEdges() {
+    std::vector<std::uint64_t> bad;
+    for (std::size_t i = 0; i < m_.size(); ++i)
+      if (m_.type[i] == PairElementType::EdgeEdge && isInverted(m_, i))
+        bad.push_back(key(m_.tets[i][0], m_.tets[i][1]));
+    std::sort(bad.begin(), bad.end());
+    bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
+    for (std::uint64_t k : bad) edges_[k];
+    for (std::size_t i = 0; i < m_.size(); ++i)
+      if (m_.type[i] == PairElementType::EdgeEdge) {
+        auto it = edges_.find(key(m_.tets[i][0], m_.tets[i][1]));
+        if (it != edges_.end()) it->second.push_back(i);
+      }
+  }
+
+  // The boundary triangles on those edges, with their Vertex-Face element.
+  void collectPolygons() {
+    for (std::size_t i = 0; i < m_.size(); ++i) {
+      if (m_.type[i] != PairElementType::VertexFace) continue;
+      const auto& t = m_.tets[i];
+      bool touches = false;
+      for (int k = 0; k < 3; ++k) touches |= edges_.count(key(t[1 + k], t[1 + (k + 1) % 3])) > 0;
+      if (!touches) continue;
+      BoundaryPolygon p;
+      p.corners = {t[1], t[2], t[3]};
+      p.apex = t[0];
+      p.elements = {i};
+      p.triangles = {p.corners};
+      for (int k = 0; k < 3; ++k) {
+        auto& list = polygonsOfEdge_[key(p.corners[k], p.corners[(k + 1) % 3])];
+        list.push_back(polygons_.size());
+      }
+      polygons_.push_back(std::move(p));
+    }
+  }
+
+  static std::uint64_t key(Index a, Index b) {
+    if (a > b) std::swap(a, b);
+    return (static_cast<std::uint64_t>(a) << 32) | b;
+  }
+
+  // The polygon of p: corners with split nodes between them; `extra` is a
+  // split being tried on edge `extraEdge`.
+  std::vector<Index> outline(const BoundaryPolygon& p, int extraEdge = -1, Index extra = kNoIndex) const {
+    std::vector<Index> o;
+    for (int k = 0; k < 3; ++k) {
+      o.push_back(p.corners[k]);
+      const Index s = k == extraEdge ? extra : p.splits[k];
+      if (s != kNoIndex) o.push_back(s);
+    }
+    return o;
+  }
+
+  // Best triangulation of an outline coned to apex, and its score.
+  Score bestTriangulation(const std::vector<Index>& o, Index apex, std::vector<std::array<Index, 3>>* out) const {
+    Score best{~std::size_t{0}, 0};
+    for (const Triangulation& tr : triangulationsOf(static_cast<int>(o.size()))) {
+      Score s;
+      for (const auto& t : tr) addToScore(s, m_.nodes, {apex, o[t[0]], o[t[1]], o[t[2]]});
+      if (s < best) {
+        best = s;
+        if (out) {
+          out->clear();
+          for (const auto& t : tr) out->push_back({o[t[0]], o[t[1]], o[t[2]]});
+        }
+      }
+    }
+    return best;
+  }
+
+  int edgeIndex(const BoundaryPolygon& p, Index a, Index b) const {
+    for (int k = 0; k < 3; ++k) {
+      const Index x = p.corners[k], y = p.corners[(k + 1) % 3];
+      if ((x == a && y == b) || (x == b && y == a)) return k;
+    }
+    return -1;
+  }
+
+  // Candidate split points: from the edge's midpoint toward each chain node
+  // and the chain's centroid, by growing steps (the first positive one stays
+  // closest to the boundary).
+  std::vector<Vec3> candidates(Index a, Index b, const std::vector<std::size_t>& ee) const {
+    std::vector<Index> chain;
+    for (std::size_t i : ee) chain.push_back(m_.tets[i][2]), chain.push_back(m_.tets[i][3]);
+    std::sort(chain.begin(), chain.end());
+    chain.erase(std::unique(chain.begin(), chain.end()), chain.end());
+    const Vec3 &pa = m_.nodes[a], &pb = m_.nodes[b];
+    const Vec3 mid{(pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2, (pa[2] + pb[2]) / 2};
+    std::vector<Vec3> targets;
+    Vec3 centroid{0, 0, 0};
+    for (Index v : chain) {
+      targets.push_back(m_.nodes[v]);
+      for (int k = 0; k < 3; ++k) centroid[k] += m_.nodes[v][k] / static_cast<double>(chain.size());
+    }
+    targets.push_back(centroid);
+    for (std::size_t i : ee) {  // chain segment midpoints
+      const Vec3 &p = m_.nodes[m_.tets[i][2]], &q = m_.nodes[m_.tets[i][3]];
+      targets.push_back({(p[0] + q[0]) / 2, (p[1] + q[1]) / 2, (p[2] + q[2]) / 2});
+    }
+    // Up to and a little past the chain: when the chain lies between the
+    // edge and the cut face, the face is just beyond it.
+    static constexpr double kSteps[] = {0.05, 0.1, 0.2, 0.35, 0.5, 0.7, 0.9, 1.02, 1.1, 1.25};
+    std::vector<Vec3> out;
+    for (double s : kSteps)
+      for (const Vec3& q : targets)
+        out.push_back({mid[0] + s * (q[0] - mid[0]), mid[1] + s * (q[1] - mid[1]), mid[2] + s * (q[2] - mid[2])});
+    return out;
+  }
+
+  bool trySplit(std::uint64_t edgeKey, const std::vector<std::size_t>& ee) {
+    auto pit = polygonsOfEdge_.find(edgeKey);
+    if (pit == polygonsOfEdge_.end() || pit->second.size() != 2 || ee.empty()) return false;  // non-manifold
+    const Index a = m_.tets[ee[0]][0], b = m_.tets[ee[0]][1];
+    BoundaryPolygon& p0 = polygons_[pit->second[0]];
+    BoundaryPolygon& p1 = polygons_[pit->second[1]];
+    const int k0 = edgeIndex(p0, a, b), k1 = edgeIndex(p1, a, b);
+    if (k0 < 0 || k1 < 0 || p0.splits[k0] != kNoIndex || p1.splits[k1] != kNoIndex) return false;
+
+    Score current;
+    for (std::size_t i : ee) addToScore(current, m_.nodes, m_.tets[i]);
+    for (const BoundaryPolygon* p : {&p0, &p1})
+      for (const auto& t : p->triangles) addToScore(current, m_.nodes, {p->apex, t[0], t[1], t[2]});
+    if (current.negative == 0) return false;
+
+    // Try each candidate as a temporary node at the end of the node list.
+    const Index m = static_cast<Index>(m_.nodes.size());
+    m_.nodes.push_back({0, 0, 0});
+    Score best = current;
+    Vec3 bestPoint{};
+    bool found = false;
+    for (const Vec3& c : candidates(a, b, ee)) {
+      m_.nodes[m] = c;
+      Score s;
+      for (std::size_t i : ee) {
+        const auto& t = m_.tets[i];
+        addToScore(s, m_.nodes, {t[0], m, t[2], t[3]});
+        addToScore(s, m_.nodes, {m, t[1], t[2], t[3]});
+      }
+      const Score s0 = bestTriangulation(outline(p0, k0, m), p0.apex, nullptr);
+      const Score s1 = bestTriangulation(outline(p1, k1, m), p1.apex, nullptr);
+      s.negative += s0.negative + s1.negative;
+      s.deficit += s0.deficit + s1.deficit;
+      if (s.negative < best.negative || (found && s < best)) {
+        best = s;
+        bestPoint = c;
+        found = true;
+      }
+      if (found && best.negative == 0) break;
+    }
+    if (!found) {
+      m_.nodes.pop_back();
+      return false;
+    }
+    // Keep it: the node, the two halves of each Edge-Edge element, the new
+    // triangulations of both polygons.
+    m_.nodes[m] = bestPoint;
+    m_.nodeCell.push_back(kNoIndex);
+    m_.boundaryNode.push_back(1);
+    for (std::size_t i : ee) {
+      const auto t = m_.tets[i];
+      removed_.push_back(i);
+      addElement(PairElementType::EdgeEdge, {t[0], m, t[2], t[3]}, m_.medialSimplex[i], {t[0], m, kNoIndex},
+                 m_.onSheets[i]);
+      addElement(PairElementType::EdgeEdge, {m, t[1], t[2], t[3]}, m_.medialSimplex[i], {m, t[1], kNoIndex},
+                 m_.onSheets[i]);
+    }
+    p0.splits[k0] = m;
+    p1.splits[k1] = m;
+    for (BoundaryPolygon* p : {&p0, &p1}) {
+      const std::size_t first = p->elements.front();
+      const std::array<Index, 2> medial = m_.medialSimplex[first];
+      const std::uint8_t linked = m_.onSheets[first];
+      for (std::size_t e : p->elements) removed_.push_back(e);
+      bestTriangulation(outline(*p), p->apex, &p->triangles);
+      p->elements.clear();
+      for (const auto& t : p->triangles) {
+        p->elements.push_back(m_.tets.size());
+        addElement(PairElementType::VertexFace, {p->apex, t[0], t[1], t[2]}, medial, t, linked);
+      }
+    }
+    return true;
+  }
+
+  void addElement(PairElementType type, std::array<Index, 4> tet, std::array<Index, 2> medial,
+                  std::array<Index, 3> boundary, std::uint8_t linked) {
+    m_.tets.push_back(tet);
+    m_.type.push_back(type);
+    m_.medialSimplex.push_back(medial);
+    m_.boundarySimplex.push_back(boundary);
+    m_.onSheets.push_back(linked);
+  }
+
+  // Drops the replaced elements and rebuilds the boundary triangles.
+  void rebuild() {
+    std::vector<std::uint8_t> drop(m_.size(), 0);
+    for (std::size_t i : removed_) drop[i] = 1;
+    std::size_t out = 0;
+    for (std::size_t i = 0; i < m_.size(); ++i) {
+      if (drop[i]) continue;
+      m_.tets[out] = m_.tets[i];
+      m_.type[out] = m_.type[i];
+      m_.medialSimplex[out] = m_.medialSimplex[i];
+      m_.boundarySimplex[out] = m_.boundarySimplex[i];
+      m_.onSheets[out] = m_.onSheets[i];
+      ++out;
+    }
+    m_.tets.resize(out);
+    m_.type.resize(out);
+    m_.medialSimplex.resize(out);
+    m_.boundarySimplex.resize(out);
+    m_.onSheets.resize(out);
+    m_.boundaryTriangles.clear();
+    m_.counts.edgeEdge = m_.counts.vertexFace = 0;
+    for (std::size_t i = 0; i < out; ++i) {
+      if (m_.type[i] == PairElementType::EdgeEdge) ++m_.counts.edgeEdge;
+      if (m_.type[i] != PairElementType::VertexFace) continue;
+      ++m_.counts.vertexFace;
+      m_.boundaryTriangles.push_back({m_.tets[i][1], m_.tets[i][2], m_.tets[i][3]});
+    }
+    m_.counts.boundaryTriangles = m_.boundaryTriangles.size();
+  }
+
+  PairMesh& m_;
+  std::map<std::uint64_t, std::vector<std::size_t>> edges_;  // ordered: the same splits on every run
+  std::vector<BoundaryPolygon> polygons_;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> polygonsOfEdge_;
+  std::vector<std::size_t> removed_;
+};
+
+}  // namespace
+
+std::size_t splitBoundaryEdges(PairMesh& m) { return EdgeSplitter(m).run(); }
+
+}  // namespace cadmedial
