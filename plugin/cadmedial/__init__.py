@@ -13,6 +13,13 @@ Headless use (freecadcmd, or plain python3 after plugin/install.sh)::
     results = cadmedial.compute(doc.Box.Shape)
     medial = cadmedial.add_to_document(doc, doc.Box)   # parametric objects
 
+    # pair-mesh (B-rep solids): tetrahedra between the inner Voronoi diagram and the boundary
+    (axis,) = cadmedial.compute("models/box.step", pair_mesh=True)
+    pm = axis.pair_mesh                                  # PairMesh: nodes, tets, types, ...
+    print(pm.validity["inverted"], pm.validity["enclosed_volume"], pm.validity["exact_volume"])
+    points, triangles = cadmedial.iso_surface(pm, 0.5)
+    pm.write("box_pairmesh.vtu")
+
     # point clouds and meshes (MEDIAL, seed 000): arrays, files, Points/Mesh objects
     axis = cadmedial.compute_points("scan.xyz")[0]       # whole axis
     axis = cadmedial.compute("part.stl")[0]              # closed mesh: inner axis
@@ -24,7 +31,9 @@ objects in ``cadmedial.document`` do.
 from .api import (
     Cancelled,
     InputError,
+    PAIR_ELEMENT_TYPES,
     MedialAxisResult,
+    PairMesh,
     SampleResult,
     compute,
     compute_points,
@@ -32,6 +41,7 @@ from .api import (
     evaluate,
     evaluation_lines,
     inspect,
+    iso_surface,
     point_source,
     sample,
     to_source,
@@ -43,6 +53,8 @@ __all__ = [
     "EXPORT_FORMATS",
     "InputError",
     "MedialAxisResult",
+    "PAIR_ELEMENT_TYPES",
+    "PairMesh",
     "SampleResult",
     "add_to_document",
     "compute",
@@ -51,6 +63,7 @@ __all__ = [
     "evaluate",
     "evaluation_lines",
     "inspect",
+    "iso_surface",
     "point_source",
     "sample",
     "sync_sheets",

@@ -22,16 +22,22 @@ from . import icon
 #: The open panel (for scripts and tests: task_panel.current.accept()).
 current = None
 
-STAGE_TEXT = {"read": "reading", "sample": "sampling", "medial": "medial axis", "done": "done"}
+STAGE_TEXT = {"read": "reading", "sample": "sampling", "medial": "medial axis", "pair_mesh": "pair-mesh",
+              "done": "done"}
 STAGE_START = {"read": 0.0, "sample": 0.05, "medial": 0.35, "done": 1.0}
+#: With the pair-mesh, the medial stage is shorter than the pair-mesh stage (exact cell labels).
+PAIR_MESH_STAGE_START = {"read": 0.0, "sample": 0.05, "medial": 0.2, "pair_mesh": 0.35, "done": 1.0}
 
 
 class _Job:
     """One run in a worker thread: a list of (label, BREP text) to compute."""
 
-    def __init__(self, items, spacing, theta, rho, check_inside):
+    def __init__(self, items, spacing, theta, rho, check_inside, pair_mesh=False):
         self.items = items
         self.params = dict(spacing=spacing, theta=theta, rho=rho, check_inside=check_inside)
+        if pair_mesh:
+            self.params["pair_mesh"] = True
+        self.stage_start = PAIR_MESH_STAGE_START if pair_mesh else STAGE_START
         self.cancel = threading.Event()
         self.results = []
         self.error = None
@@ -64,7 +70,7 @@ class _Job:
 
     def fraction(self):
         stage, k = self.stage
-        return min(1.0, (k + STAGE_START.get(stage, 0.0)) / max(1, len(self.items)))
+        return min(1.0, (k + self.stage_start.get(stage, 0.0)) / max(1, len(self.items)))
 
 
 class MedialAxisTaskPanel:

@@ -1,0 +1,150 @@
+"""GUI test of the Pair-Mesh and Iso-surface commands, run as
+`xvfb-run -a freecad test_pair_mesh_gui.py` by run_freecad_test.sh.
+
+Opens models/box.step, selects it, runs *Pair-Mesh* through Gui.runCommand,
+accepts its task panel (the computation runs in a worker thread while this
+script keeps the event loop going and counts its rounds), checks the FEM
+mesh object, runs *Iso-surface* on it, and saves a screenshot of the 3D view
+to $CADMEDIAL_SCREENSHOT: the edge-edge elements (orange) and the
+iso-surface at T = 0.5 inside the see-through box. Ends FreeCAD with exit
+code 1 if anything is missing.
+"""
+
+import os
+import sys
+import time
+import traceback
+
+import FreeCAD as App
+import FreeCADGui as Gui
+from PySide2 import QtCore, QtGui, QtWidgets
+
+failures = []
+
+
+def check(condition, what):
+    print(("ok    " if condition else "FAIL  ") + what, flush=True)
+    if not condition:
+        failures.append(what)
+    return condition
+
+
+def wait_until(condition, timeout):
+    start = time.monotonic()
+    while not condition():
+        if time.monotonic() - start > timeout:
+            return False
+        QtWidgets.QApplication.processEvents(QtCore.QEventLoop.AllEvents, 50)
+        time.sleep(0.01)
+    return True
+
+
+def image_colours(path):
+    image = QtGui.QImage(path)
+    if image.isNull():
+        return 0
+    colours = set()
+    for y in range(0, image.height(), 4):
+        for x in range(0, image.width(), 4):
+            colours.add(image.pixel(x, y))
+    return len(colours)
+
+
+def main():
+    import Part
+
+    from cadmedial import pair_document
+
+    source_dir = os.environ["CADMEDIAL_SOURCE_DIR"]
+    screenshot = os.environ.get("CADMEDIAL_SCREENSHOT") or os.path.join(os.environ["CADMEDIAL_TEST_TMP"],
+                                                                         "pair_mesh_gui.png")
+    if os.path.exists(screenshot):
+        os.remove(screenshot)
+    Gui.activateWorkbench("MedialAxisWorkbench")
+    commands = set(Gui.listCommands())
+    for name in ("MedialAxis_PairMesh", "MedialAxis_IsoSurface", "MedialAxis_ExportPairMesh"):
+        check(name in commands, f"command {name} registered")
+
+    doc = App.newDocument("PairMeshGui")
+    box = doc.addObject("Part::Feature", "Box")
+    box.Shape = Part.read(os.path.join(source_dir, "models", "box.step"))
+    doc.recompute()
+
+    from freecad.medial_axis import commands as wb
+    from freecad.medial_axis import pair_mesh_panel
+
+    Gui.Selection.clearSelection()
+    check(not wb.IsoSurfaceCommand().IsActive() and not wb.ExportPairMeshCommand().IsActive(),
+          "Iso-surface and Export pair-mesh inactive without a pair-mesh")
+    Gui.Selection.addSelection(doc.Name, box.Name)
+    check(wb.PairMeshCommand().IsActive(), "Pair-Mesh active with a solid selected")
+    Gui.runCommand("MedialAxis_PairMesh")
+    check(wait_until(lambda: pair_mesh_panel.current is not None, 10), "Pair-Mesh opens its task panel")
+    panel = pair_mesh_panel.current
+    if panel is None:
+        return
+    panel.spacing.setValue(1.5)
+    start = time.monotonic()
+    panel.accept()
+    rounds = []
+    check(wait_until(lambda: pair_mesh_panel.current is None or rounds.append(panel.progress.value()), 240),
+          f"pair-mesh finished in {time.monotonic() - start:.1f} s with the GUI responsive "
+          f"({len(rounds)} event-loop rounds)")
+    check(panel.last_error is None, f"no error ({panel.last_error})")
+    check(len(rounds) > 5, "the event loop ran while the worker computed")
+    meshes = [o for o in doc.Objects if pair_document.is_pair_mesh(o)]
+    check(len(meshes) == 1, "one PairMesh object")
+    if not meshes:
+        return
+    pm = meshes[0]
+    check(pm.TypeId == "Fem::FemMeshObjectPython" and pm.FemMesh.VolumeCount == pm.Tetrahedra > 0,
+          f"FEM mesh with {pm.FemMesh.VolumeCount} volumes; inverted {pm.Inverted}, volume error "
+          f"{pm.VolumeError:.3g} %")
+    check(abs(pm.EnclosedVolume - box.Shape.Volume) <= 0.01 * box.Shape.Volume, "enclosed volume within 1 %")
+    check("Pair-Mesh" in doc.UndoNames, f"undo transaction {doc.UndoNames[:2]}")
+    check(isinstance(pm.ViewObject.Proxy, pair_document.ViewProviderPairMesh), "view provider attached")
+    check(len(pm.ViewObject.ElementColor) == pm.Tetrahedra, f"{len(pm.ViewObject.ElementColor)} element colours")
+
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(doc.Name, pm.Name)
+    Gui.runCommand("MedialAxis_IsoSurface")
+    isos = [o for o in doc.Objects if pair_document.is_iso_surface(o)]
+    check(len(isos) == 1 and isos[0].Triangles > 0 and abs(isos[0].T - 0.5) < 1e-12,
+          f"Iso-surface at T = 0.5: {isos[0].Triangles if isos else 0} triangles")
+
+    # Screenshot: edge-edge elements (orange) and the iso-surface in the see-through box.
+    pm.Elements = "EdgeEdge"
+    doc.recompute()
+    gui_doc = Gui.getDocument(doc.Name)
+    box_view = gui_doc.getObject(box.Name)
+    box_view.Transparency = 85
+    box_view.ShapeColor = (0.75, 0.78, 0.82)
+    if isos:
+        iso_view = gui_doc.getObject(isos[0].Name)
+        iso_view.ShapeColor = (0.35, 0.55, 0.95)
+        iso_view.Transparency = 30
+    Gui.Selection.clearSelection()
+    view = gui_doc.ActiveView
+    view.viewIsometric()
+    view.fitAll()
+    Gui.updateGui()
+    wait_until(lambda: False, 0.5)
+    view.saveImage(screenshot, 1600, 1200, "Current")
+    colours = image_colours(screenshot)
+    check(os.path.isfile(screenshot) and colours > 100, f"screenshot {screenshot} ({colours} colours)")
+
+
+def run():
+    code = 1
+    try:
+        main()
+        code = 1 if failures else 0
+    except Exception:  # noqa: BLE001
+        traceback.print_exc()
+    print(f"{len(failures)} failure(s)" + (": " + "; ".join(failures) if failures else ""), flush=True)
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os._exit(code)
+
+
+QtCore.QTimer.singleShot(500, run)
