@@ -130,6 +130,14 @@ def fem_mesh(mesh, elements="All"):
     return fm
 
 
+def prebuild_fem_mesh(mesh):
+    """Builds the "All" FemMesh of an api.PairMesh ahead of time (a GUI does
+    it in its worker thread); PairMeshFeature takes it instead of building
+    one in the main thread."""
+    mesh.prebuilt_fem = fem_mesh(mesh, "All")
+    return mesh.prebuilt_fem
+
+
 class PairMeshFeature:
     Type = PAIR_MESH_TYPE
 
@@ -247,7 +255,9 @@ class PairMeshFeature:
         obj.InputSignature = signature
 
     def apply(self, obj, mesh):
-        obj.FemMesh = fem_mesh(mesh, obj.Elements)
+        prebuilt = getattr(mesh, "prebuilt_fem", None) if obj.Elements == "All" else None
+        obj.FemMesh = prebuilt if prebuilt is not None else fem_mesh(mesh, obj.Elements)
+        mesh.prebuilt_fem = None  # used once; the object holds its own copy
         r = mesh.report
         c = mesh.counts()
         obj.Nodes = mesh.node_count

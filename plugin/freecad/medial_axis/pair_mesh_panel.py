@@ -112,7 +112,12 @@ class PairMeshTaskPanel:
             return False
         # One parameter set per run (the first target's theta / rho).
         spacing, theta, rho = self._params(self.targets[0][3])
-        self.job = _Job(items, spacing, theta, rho, False, pair_mesh=True)
+        from cadmedial import pair_document
+
+        # The FemMesh is built in the worker too (pure data, no document):
+        # for large meshes it takes longer than the pair-mesh itself.
+        self.job = _Job(items, spacing, theta, rho, False, pair_mesh=True,
+                        prepare=lambda result: pair_document.prebuild_fem_mesh(result.pair_mesh))
         self.spacing.setEnabled(False)
         self.progress.setVisible(True)
         self.progress.setValue(0)

@@ -23,17 +23,21 @@ from . import icon
 current = None
 
 STAGE_TEXT = {"read": "reading", "sample": "sampling", "medial": "medial axis", "pair_mesh": "pair-mesh",
-              "done": "done"}
+              "prepare": "building the FEM mesh", "done": "done"}
 STAGE_START = {"read": 0.0, "sample": 0.05, "medial": 0.35, "done": 1.0}
 #: With the pair-mesh, the medial stage is shorter than the pair-mesh stage (exact cell labels).
-PAIR_MESH_STAGE_START = {"read": 0.0, "sample": 0.05, "medial": 0.2, "pair_mesh": 0.35, "done": 1.0}
+PAIR_MESH_STAGE_START = {"read": 0.0, "sample": 0.05, "medial": 0.2, "pair_mesh": 0.35, "prepare": 0.7,
+                         "done": 1.0}
 
 
 class _Job:
     """One run in a worker thread: a list of (label, BREP text) to compute."""
 
-    def __init__(self, items, spacing, theta, rho, check_inside, pair_mesh=False):
+    def __init__(self, items, spacing, theta, rho, check_inside, pair_mesh=False, prepare=None):
+        """prepare(result): optional work on each result in the worker thread
+        (e.g. building a FEM mesh) so the main thread has less to do."""
         self.items = items
+        self.prepare = prepare
         self.params = dict(spacing=spacing, theta=theta, rho=rho, check_inside=check_inside)
         if pair_mesh:
             self.params["pair_mesh"] = True
@@ -60,6 +64,9 @@ class _Job:
                 start = time.perf_counter()
                 results = cadmedial.compute(brep, cancel=self.cancel, progress=progress, **self.params)
                 results[0].seconds = time.perf_counter() - start  # wall time, as a recompute measures it
+                if self.prepare is not None:
+                    self.stage = ("prepare", k)
+                    self.prepare(results[0])
                 self.results.append(results[0])
         except BaseException as e:  # noqa: BLE001 - reported in the main thread
             self.error = e
