@@ -56,6 +56,7 @@ __all__ = [
     "PAIR_ELEMENT_TYPES",
     "PairMesh",
     "SampleResult",
+    "add_pair_mesh",
     "add_to_document",
     "compute",
     "compute_points",
@@ -81,6 +82,15 @@ def add_to_document(doc, source, spacing=0.0, theta=None, rho=8.0, **options):
     from . import document
 
     return document.add_to_document(doc, source, spacing=spacing, theta=theta, rho=rho, **options)
+
+
+def add_pair_mesh(doc, source, spacing=None, theta=None, rho=None, **options):
+    """Parametric PairMesh objects (FEM meshes) for the solids of `source` (a
+    solid object or a MedialAxis object); returns them. See
+    cadmedial.pair_document.add_pair_mesh."""
+    from . import pair_document
+
+    return pair_document.add_pair_mesh(doc, source, spacing=spacing, theta=theta, rho=rho, **options)
 
 
 def sync_sheets(medial_obj):

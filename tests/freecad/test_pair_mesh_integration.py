@@ -143,7 +143,7 @@ def main():
     block.Length, block.Width, block.Height = 20, 10, 6
     doc2.recompute()
     (axis,) = cadmedial.add_to_document(doc2, block, spacing=1.5)
-    (pm2,) = pair_document.add_pair_mesh(doc2, axis)
+    (pm2,) = cadmedial.add_pair_mesh(doc2, axis)  # the package-level helper
     check(pm2.Source == block and pm2.Spacing.Value == 1.5 and healthy(pm2) and pm2.Inverted == 0,
           f"pair-mesh of a medial axis' solid: spacing {pm2.Spacing.Value}, {pm2.Tetrahedra} tetrahedra")
     check(abs(pm2.EnclosedVolume - 1200) <= 12, f"block: enclosed {pm2.EnclosedVolume:.3f} vs 1200")
