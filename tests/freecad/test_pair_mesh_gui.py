@@ -78,6 +78,29 @@ def main():
           "Iso-surface and Export pair-mesh inactive without a pair-mesh")
     Gui.Selection.addSelection(doc.Name, box.Name)
     check(wb.PairMeshCommand().IsActive(), "Pair-Mesh active with a solid selected")
+    # Cancel during a run: the panel closes at once, nothing is created, the
+    # worker stops at its next stage boundary.
+    Gui.runCommand("MedialAxis_PairMesh")
+    check(wait_until(lambda: pair_mesh_panel.current is not None, 10), "Pair-Mesh opens its task panel (cancel run)")
+    panel = pair_mesh_panel.current
+    if panel is None:
+        return
+    panel.spacing.setValue(0.5)
+    panel.accept()
+    job = panel.job
+    wait_until(lambda: False, 0.2)
+    start = time.monotonic()
+    panel.reject()
+    check(pair_mesh_panel.current is None and time.monotonic() - start < 1.0, "Cancel closes the panel at once")
+    if job is not None:
+        import cadmedial
+
+        check(wait_until(lambda: job.finished, 120) and isinstance(job.error, cadmedial.Cancelled),
+              f"the worker stops with Cancelled ({job.error!r})")
+    check(not any(pair_document.is_pair_mesh(o) for o in doc.Objects), "a cancelled run creates nothing")
+
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(doc.Name, box.Name)
     Gui.runCommand("MedialAxis_PairMesh")
     check(wait_until(lambda: pair_mesh_panel.current is not None, 10), "Pair-Mesh opens its task panel")
     panel = pair_mesh_panel.current
@@ -153,6 +176,22 @@ def main():
     view.saveImage(elements_shot, 1600, 1200, "Current")
     colours = image_colours(elements_shot)
     check(os.path.isfile(elements_shot) and colours > 100, f"screenshot {elements_shot} ({colours} colours)")
+
+    # Saved from the GUI and reopened: view providers back; undo removes the objects.
+    copy = os.path.join(os.environ["CADMEDIAL_TEST_TMP"], "pair_gui_copy.FCStd")
+    doc.saveCopy(copy)
+    reopened = App.openDocument(copy)
+    wait_until(lambda: False, 0.5)
+    again = next((o for o in reopened.Objects if pair_document.is_pair_mesh(o)), None)
+    check(again is not None and isinstance(again.ViewObject.Proxy, pair_document.ViewProviderPairMesh)
+          and again.FemMesh.VolumeCount == pm.FemMesh.VolumeCount, "reopened: PairMesh with its view provider")
+    App.closeDocument(reopened.Name)
+    App.setActiveDocument(doc.Name)
+    for _ in list(doc.UndoNames):
+        doc.undo()
+    wait_until(lambda: False, 0.3)
+    check(not any(pair_document.is_pair_mesh(o) or pair_document.is_iso_surface(o) for o in doc.Objects),
+          "undo removes the pair-mesh and the iso-surface")
 
 
 def run():
