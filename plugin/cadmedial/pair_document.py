@@ -131,10 +131,14 @@ def fem_mesh(mesh, elements="All"):
 
 
 def prebuild_fem_mesh(mesh):
-    """Builds the "All" FemMesh of an api.PairMesh ahead of time (a GUI does
-    it in its worker thread); PairMeshFeature takes it instead of building
-    one in the main thread."""
+    """Builds the "All" FemMesh and the compressed ResultData file of an
+    api.PairMesh ahead of time (a GUI does it in its worker thread);
+    PairMeshFeature takes them instead of making them in the main thread."""
     mesh.prebuilt_fem = fem_mesh(mesh, "All")
+    handle, path = tempfile.mkstemp(prefix="pairmesh_", suffix=".npz")
+    os.close(handle)
+    mesh.to_npz(path)
+    mesh.prebuilt_npz = path
     return mesh.prebuilt_fem
 
 
@@ -245,10 +249,13 @@ class PairMeshFeature:
             mesh.tet_count
 
     def store(self, obj, mesh, signature):
-        handle, path = tempfile.mkstemp(prefix="pairmesh_", suffix=".npz")
-        os.close(handle)
-        try:
+        path = getattr(mesh, "prebuilt_npz", None)
+        mesh.prebuilt_npz = None  # used once
+        if path is None or not os.path.isfile(path):
+            handle, path = tempfile.mkstemp(prefix="pairmesh_", suffix=".npz")
+            os.close(handle)
             mesh.to_npz(path)
+        try:
             obj.ResultData = path  # FreeCAD copies it into the document
         finally:
             os.remove(path)
