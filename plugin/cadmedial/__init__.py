@@ -13,6 +13,13 @@ Headless use (freecadcmd, or plain python3 after plugin/install.sh)::
     results = cadmedial.compute(doc.Box.Shape)
     medial = cadmedial.add_to_document(doc, doc.Box)   # parametric objects
 
+    # pair-mesh (B-rep solids): tetrahedra between the inner Voronoi diagram and the boundary
+    (axis,) = cadmedial.compute("models/box.step", pair_mesh=True)
+    pm = axis.pair_mesh                                  # PairMesh: nodes, tets, types, ...
+    print(pm.validity["inverted"], pm.validity["enclosed_volume"], pm.validity["exact_volume"])
+    points, triangles = cadmedial.iso_surface(pm, 0.5)
+    pm.write("box_pairmesh.vtu")
+
     # point clouds and meshes (MEDIAL, seed 000): arrays, files, Points/Mesh objects
     axis = cadmedial.compute_points("scan.xyz")[0]       # whole axis
     axis = cadmedial.compute("part.stl")[0]              # closed mesh: inner axis
@@ -24,7 +31,9 @@ objects in ``cadmedial.document`` do.
 from .api import (
     Cancelled,
     InputError,
+    PAIR_ELEMENT_TYPES,
     MedialAxisResult,
+    PairMesh,
     SampleResult,
     compute,
     compute_points,
@@ -32,6 +41,7 @@ from .api import (
     evaluate,
     evaluation_lines,
     inspect,
+    iso_surface,
     point_source,
     sample,
     to_source,
@@ -43,7 +53,10 @@ __all__ = [
     "EXPORT_FORMATS",
     "InputError",
     "MedialAxisResult",
+    "PAIR_ELEMENT_TYPES",
+    "PairMesh",
     "SampleResult",
+    "add_pair_mesh",
     "add_to_document",
     "compute",
     "compute_points",
@@ -51,6 +64,7 @@ __all__ = [
     "evaluate",
     "evaluation_lines",
     "inspect",
+    "iso_surface",
     "point_source",
     "sample",
     "sync_sheets",
@@ -68,6 +82,15 @@ def add_to_document(doc, source, spacing=0.0, theta=None, rho=8.0, **options):
     from . import document
 
     return document.add_to_document(doc, source, spacing=spacing, theta=theta, rho=rho, **options)
+
+
+def add_pair_mesh(doc, source, spacing=None, theta=None, rho=None, **options):
+    """Parametric PairMesh objects (FEM meshes) for the solids of `source` (a
+    solid object or a MedialAxis object); returns them. See
+    cadmedial.pair_document.add_pair_mesh."""
+    from . import pair_document
+
+    return pair_document.add_pair_mesh(doc, source, spacing=spacing, theta=theta, rho=rho, **options)
 
 
 def sync_sheets(medial_obj):

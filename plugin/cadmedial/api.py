@@ -25,9 +25,13 @@ Cancelled = _native.Cancelled
 
 PROVENANCE_NAMES = ("delaunay_edge_facet", "convex_edge_triangle", "convex_edge_fill", "corner_triangle")
 
+#: Why a point cloud or mesh gets no pair-mesh (compute(..., pair_mesh=True) raises ValueError).
 PAIR_MESH_MESSAGE = (
-    "the pair-mesh (DESIGN.md section 5) is not implemented yet; call with pair_mesh=False"
+    "the pair-mesh needs a B-rep solid (a STEP/IGES/BREP file, a Part shape or a solid object): its inner "
+    "Voronoi cells are decided by OpenCASCADE's exact solid classifier; point clouds and meshes have no B-rep"
 )
+#: Element types of the pair-mesh, by code (PairMesh.types).
+PAIR_ELEMENT_TYPES = ("face_vertex", "edge_edge", "vertex_face")
 
 
 def _label(obj):
@@ -110,6 +114,8 @@ class MedialAxisResult:
         self.theta = float(theta)
         self.rho = float(rho)
         self._triangles = None
+        #: The PairMesh when computed with pair_mesh=True, else None.
+        self.pair_mesh = PairMesh(data["pair_mesh"]) if data.get("pair_mesh") is not None else None
 
     # -- sizes ---------------------------------------------------------------
     @property
@@ -249,6 +255,126 @@ class MedialAxisResult:
         return cls(data, meta.get("theta", 5.0), meta.get("rho", 8.0))
 
 
+class PairMesh:
+    """The pair-mesh of one solid (DESIGN.md section 5): tetrahedra linking the
+    inner Voronoi diagram of the samples to the boundary surface.
+
+    Arrays: ``nodes`` (N x 3 float64), ``node_is_boundary`` (N uint8: 1 on the
+    boundary, i.e. a sample; 0 a Voronoi node), ``tets`` (M x 4 int64, positive
+    orientation when valid), ``types`` (M uint8: 0 face-vertex, 1 edge-edge,
+    2 vertex-face; see PAIR_ELEMENT_TYPES), ``on_sheets`` (M uint8: 1 if the
+    element's medial simplex is on the CAD_MEDIAL sheets), ``boundary_triangles``
+    (K x 3 int64 into nodes, outward). ``report``: counts, validity, exact
+    volume, repair and seconds (the "pair_mesh" block of summary.json)."""
+
+    ARRAYS = ("nodes", "node_is_boundary", "tets", "types", "on_sheets", "boundary_triangles")
+    #: The keys of report that say whether the complex is valid.
+    VALIDITY_KEYS = ("valid", "pass", "inverted", "degenerate", "overlap_error", "gap_error",
+                     "boundary_triangles_not_in_one_vertex_face", "boundary_edges_not_shared",
+                     "enclosed_volume", "exact_volume", "volume_error",
+                     "inverted_before_repair", "moved_voronoi_nodes", "inverted_after_repair")
+
+    def __init__(self, data):
+        self.nodes = np.asarray(data["nodes"], dtype=np.float64).reshape(-1, 3)
+        self.node_is_boundary = np.asarray(data["node_is_boundary"], dtype=np.uint8)
+        self.tets = np.asarray(data["tets"], dtype=np.int64).reshape(-1, 4)
+        self.types = np.asarray(data["types"], dtype=np.uint8)
+        self.on_sheets = np.asarray(data["on_sheets"], dtype=np.uint8)
+        self.boundary_triangles = np.asarray(data["boundary_triangles"], dtype=np.int64).reshape(-1, 3)
+        self.report = dict(data.get("report", {}))
+
+    @property
+    def validity(self):
+        """dict: valid (a partition: no inverted element, no overlap, no gap,
+        closed boundary), pass (valid and enclosed volume within 1 % of the
+        exact solid volume), inverted, overlap_error, gap_error, enclosed_volume,
+        exact_volume (OCCT), volume_error, repair counts."""
+        return {k: self.report[k] for k in self.VALIDITY_KEYS if k in self.report}
+
+    @property
+    def valid(self):
+        return bool(self.report.get("valid", False))
+
+    @property
+    def seconds(self):
+        """dict: classify_cells, build, repair, check, total."""
+        return dict(self.report.get("seconds", {}))
+
+    @property
+    def node_count(self):
+        return int(self.nodes.shape[0])
+
+    @property
+    def tet_count(self):
+        return int(self.tets.shape[0])
+
+    def counts(self):
+        """Tetrahedra per type name."""
+        n = np.bincount(self.types, minlength=3)
+        return {name: int(n[i]) for i, name in enumerate(PAIR_ELEMENT_TYPES)}
+
+    def volumes(self):
+        """Signed volume of every tetrahedron (positive = valid)."""
+        p = self.nodes[self.tets]
+        return np.einsum("ij,ij->i", p[:, 1] - p[:, 0], np.cross(p[:, 2] - p[:, 0], p[:, 3] - p[:, 0])) / 6.0
+
+    def iso_surface(self, t=0.5):
+        """(points K x 3, triangles T x 3) of the iso-parametric surface at t in
+        [0, 1]: 0 the medial side, 1 the boundary (exactly boundary_triangles)."""
+        return iso_surface(self, t)
+
+    def write(self, path, format=None):
+        """Writes .vtu (VTK XML: cell data type / on_sheets, point data boundary)
+        or TetGen (.node + .ele next to each other; `path` may end in either or
+        in neither); atomically, with the command line's writers. Returns the
+        path(s) written."""
+        stem, ext = os.path.splitext(os.fspath(path))
+        format = (format or ext.lstrip(".") or "vtu").lower()
+        if format in ("node", "ele"):
+            format = "tetgen"
+        if format not in ("vtu", "tetgen"):
+            raise ValueError(f"pair-mesh formats are 'vtu' and 'tetgen' (.node/.ele), got {format!r}")
+        base = stem if format == "tetgen" and ext.lower() in (".node", ".ele") else os.fspath(path)
+        _native.write_pair_mesh(base, format, self.nodes, self.node_is_boundary, self.tets, self.types,
+                                self.on_sheets)
+        return (base + ".node", base + ".ele") if format == "tetgen" else base
+
+    def to_npz(self, path):
+        import json
+
+        np.savez_compressed(path, **{name: getattr(self, name) for name in self.ARRAYS},
+                            meta=np.frombuffer(json.dumps({"report": self.report}).encode("utf-8"), dtype=np.uint8))
+
+    @classmethod
+    def from_npz(cls, path):
+        import json
+
+        with np.load(path) as z:
+            data = {name: z[name] for name in cls.ARRAYS}
+            data.update(json.loads(bytes(z["meta"]).decode("utf-8")))
+        return cls(data)
+
+    def __repr__(self):
+        c = self.counts()
+        return (f"<PairMesh {self.node_count} nodes, {self.tet_count} tetrahedra ({c['face_vertex']} face-vertex, "
+                f"{c['edge_edge']} edge-edge, {c['vertex_face']} vertex-face), {self.report.get('inverted', '?')} "
+                f"inverted, {'valid' if self.valid else 'NOT valid'}>")
+
+
+def iso_surface(result, t=0.5):
+    """Iso-parametric surface of a pair-mesh (a PairMesh, or a MedialAxisResult
+    computed with pair_mesh=True) at t in [0, 1]: (points K x 3, triangles T x 3)."""
+    mesh = result.pair_mesh if isinstance(result, MedialAxisResult) else result
+    if mesh is None:
+        raise ValueError("this result has no pair-mesh; compute it with pair_mesh=True")
+    if not isinstance(mesh, PairMesh):
+        raise TypeError(f"expected a PairMesh or a MedialAxisResult, got {type(result).__name__}")
+    if isinstance(t, bool) or not isinstance(t, (int, float)) or not 0.0 <= t <= 1.0:
+        raise ValueError(f"t must be a number in [0, 1] (0 medial side, 1 boundary), got {t!r}")
+    d = _native.iso_surface(mesh.nodes, mesh.tets, mesh.types, float(t))
+    return d["points"], d["triangles"]
+
+
 class SampleResult:
     """Boundary samples of one solid: ``points`` (N x 3), ``kind`` (0 face,
     1 edge, 2 vertex), ``owner``, ``on_convex_edge``, ``nonconcave_corner``,
@@ -346,25 +472,31 @@ def compute(source, spacing=0.0, theta=None, rho=8.0, pair_mesh=False, check_ins
     spacing: sample spacing in model units (0 = bounding-box diagonal / 40).
     theta (degrees), rho: the Angle and Ratio conditions of CAD_MEDIAL
       (theta None: 5 for solids, 22.5 for point clouds and meshes).
-    pair_mesh: not implemented yet (raises NotImplementedError if True).
+    pair_mesh: also build the pair-mesh (DESIGN.md section 5) on the same
+      triangulation; each result then has .pair_mesh (a PairMesh). Needs a
+      B-rep solid: ValueError for point clouds and meshes. Adds the stage
+      "pair_mesh" (exact OCCT inner labels, construction, repair, validity).
     check_inside: count disagreements of the inner/outer walk with OCCT's exact
       classifier (summary["diagnostics"]["walk_oracle_disagreements"]).
     progress(stage, solid, solids): called between stages ("read", "sample",
-      "medial", "done"); return False to stop (raises Cancelled).
+      "medial", "pair_mesh", "done"); return False to stop (raises Cancelled).
     cancel: a threading.Event (or anything with is_set()); when set, the run
       stops at the next stage boundary with Cancelled.
 
     The GIL is released while C++ runs, so this can run in a worker thread.
     Raises InputError (a ValueError) for unreadable input or no closed solid.
     """
-    if pair_mesh:
-        raise NotImplementedError(PAIR_MESH_MESSAGE)
+    if not isinstance(pair_mesh, (bool, np.bool_)):
+        raise ValueError(f"pair_mesh must be True or False, got {pair_mesh!r}")
     if not (hasattr(source, "exportBrepToString") or isinstance(source, bytes)) and point_source(source) is not None:
+        if pair_mesh:
+            raise ValueError(PAIR_MESH_MESSAGE)
         return compute_points(source, POINT_CLOUD_THETA if theta is None else theta, rho, progress, cancel)
     theta = 5.0 if theta is None else theta
     _check_params(spacing, theta, rho)
     raw = _native.compute(
-        to_source(source), float(spacing), float(theta), float(rho), bool(check_inside), _with_cancel(progress, cancel)
+        to_source(source), float(spacing), float(theta), float(rho), bool(check_inside), _with_cancel(progress, cancel),
+        pair_mesh=bool(pair_mesh),
     )
     return [MedialAxisResult(d, theta, rho) for d in raw]
 

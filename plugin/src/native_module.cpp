@@ -9,6 +9,7 @@
 // breaks CGAL's own `Handle` templates.
 #include "cadmedial/compute_medial.hpp"
 #include "cadmedial/medial.hpp"
+#include "pair_mesh_bindings.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -20,6 +21,7 @@
 #include <cstring>
 #include <exception>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -202,6 +204,7 @@ py::list toList(const std::vector<std::string>& v) {
 struct SolidRun {
   SolidSampling sampled;
   MedialResult medial;
+  std::optional<PairMeshRun> pairMesh;
   double secondsRead = 0;
 };
 
@@ -213,7 +216,7 @@ InsideOracle makeOracle(BRepClass3d_SolidClassifier& classifier) {
 }
 
 py::list compute(const std::string& source, double spacing, double theta, double rho, bool checkInside,
-                 py::object progressCallback) {
+                 py::object progressCallback, bool pairMesh) {
   if (!(spacing >= 0)) throw py::value_error("spacing must be >= 0 (0 = automatic), got " + std::to_string(spacing));
   if (!(theta >= 0 && theta < 90)) throw py::value_error("theta must be in [0, 90) degrees, got " + std::to_string(theta));
   if (!(rho > 0)) throw py::value_error("rho must be > 0, got " + std::to_string(rho));
@@ -241,7 +244,17 @@ py::list compute(const std::string& source, double spacing, double theta, double
       InsideOracle oracle;
       BRepClass3d_SolidClassifier classifier(input.solids[i]);
       if (checkInside) oracle = makeOracle(classifier);
-      runs[i].medial = computeCadMedial(runs[i].sampled.samples, params, oracle);
+      const SampleSet& samples = runs[i].sampled.samples;
+      if (!pairMesh) {
+        runs[i].medial = computeCadMedial(samples, params, oracle);
+        continue;
+      }
+      // The pair-mesh lives on the axis' triangulation: build it once for both.
+      samples.validate();
+      const DelaunayVoronoi dv(samples.points);
+      runs[i].medial = computeCadMedial(dv, samples, params, oracle);
+      progress.report("pair_mesh", i, n);
+      runs[i].pairMesh = runPairMesh(dv, samples, input.solids[i], runs[i].medial);
     }
     progress.report("done", n, n);
   });
@@ -276,6 +289,10 @@ py::list compute(const std::string& source, double spacing, double theta, double
     std::vector<std::string> warnings = input.warnings;
     warnings.insert(warnings.end(), s.report.warnings.begin(), s.report.warnings.end());
     d["warnings"] = toList(warnings);
+    if (runs[i].pairMesh) {
+      d["pair_mesh"] = pairMeshToDict(*runs[i].pairMesh);
+      summary["pair_mesh"] = runs[i].pairMesh->report;
+    }
     d["summary"] = jsonToPython(summary);
     out.append(d);
   }
@@ -558,6 +575,7 @@ PYBIND11_MODULE(_native, m) {
 
   m.def("compute", &compute, py::arg("source"), py::arg("spacing") = 0.0, py::arg("theta") = 5.0,
         py::arg("rho") = 8.0, py::arg("check_inside") = true, py::arg("progress") = py::none(),
+        py::arg("pair_mesh") = false,
         R"(Inner medial axis of every closed solid in `source` (BREP text or a file name).
 
 Returns a list with one dict per solid: vertices (N x 3), radius (N),
@@ -569,6 +587,11 @@ spacing 0 = automatic (bounding-box diagonal / 40); theta in degrees.
 check_inside counts disagreements of the walk with OCCT's exact classifier.
 progress(stage, solid, solids) is called between stages with the GIL held;
 returning False raises Cancelled. The GIL is released while C++ runs.
+pair_mesh: also build the pair-mesh (DESIGN.md section 5) on the same
+triangulation, with exact inner labels (stage "pair_mesh"); each dict then has
+pair_mesh: nodes (N x 3), node_is_boundary (N), tets (M x 4), types (M; 0
+face-vertex, 1 edge-edge, 2 vertex-face), on_sheets (M), boundary_triangles
+(K x 3) and report (counts, validity, exact volume, repair, seconds).
 Raises InputError (a ValueError) for unreadable input or no closed solid.)");
   m.def("sample", &sample, py::arg("source"), py::arg("spacing") = 0.0, py::arg("progress") = py::none(),
         R"(Boundary samples of every closed solid in `source`: points (N x 3), kind (0 face,
@@ -597,5 +620,6 @@ compute() plus axis ("inner" | "whole") and axis_note.)");
         "Points (N x 3) and triangles (M x 3) of a .xyz/.pts/.ply/.stl/.obj/.off file, as `cadmedial run` reads it.");
   m.def("is_point_input", &isPointInputPath, py::arg("path"),
         "True if `cadmedial run` treats this file name as a point cloud or mesh (.xyz .pts .ply .stl .obj .off).");
-  m.attr("PAIR_MESH_AVAILABLE") = false;
+  registerPairMeshFunctions(m);
+  m.attr("PAIR_MESH_AVAILABLE") = true;
 }

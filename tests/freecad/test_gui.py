@@ -64,7 +64,7 @@ def main():
     check(type(Gui.activeWorkbench()).__name__ == "MedialAxisWorkbench", "workbench activated")
     commands = set(Gui.listCommands())
     for name in ("MedialAxis_Compute", "MedialAxis_Export", "MedialAxis_Evaluate", "MedialAxis_PairMesh",
-                 "MedialAxis_IsoSurface"):
+                 "MedialAxis_IsoSurface", "MedialAxis_ExportPairMesh"):
         check(name in commands, f"command {name} registered")
 
     doc = App.newDocument("GuiTest")
@@ -76,7 +76,7 @@ def main():
     from freecad.medial_axis import commands as wb_commands
     from freecad.medial_axis import task_panel
 
-    check(not wb_commands.NotYetCommand("PairMesh.svg", "Pair-Mesh", "").IsActive(), "Pair-Mesh is inactive")
+    check(not wb_commands.IsoSurfaceCommand().IsActive(), "Iso-surface is inactive without a selected pair-mesh")
 
     # A bad selection: an error in the Report view, no task panel, no object.
     face = doc.addObject("Part::Feature", "JustAFace")

@@ -264,8 +264,8 @@ def main():
         check(e.exit_code == 3, "InputError carries the CLI exit code (3)")
     expect_error(lambda: cadmedial.compute(flange_path, spacing=-1), ValueError, "spacing", "negative spacing")
     expect_error(lambda: cadmedial.compute(flange_path, rho=0), ValueError, "rho", "rho 0")
-    expect_error(lambda: cadmedial.compute(flange_path, pair_mesh=True), NotImplementedError, "pair-mesh",
-                 "pair_mesh=True")
+    expect_error(lambda: cadmedial.compute(np.zeros((10, 3)) + np.arange(10)[:, None], pair_mesh=True), ValueError,
+                 "B-rep solid", "pair_mesh=True on points")
     expect_error(lambda: cadmedial.compute(42), TypeError, "cannot use", "a number as source")
     stop = threading.Event()
     stop.set()

@@ -3,8 +3,10 @@
 MedialAxis_Compute    task panel, then one parametric MedialAxis per selected solid
 MedialAxis_Export     selected medial axes / sheets to .ply, .obj or .ma
 MedialAxis_Evaluate   the checks available so far (topology, walk vs exact classifier)
-MedialAxis_PairMesh   not available yet (DESIGN.md section 5)
-MedialAxis_IsoSurface not available yet (DESIGN.md section 5)
+MedialAxis_PairMesh   task panel, then one parametric PairMesh (FEM mesh) per selected solid
+                      or per selected medial axis (its source and parameters)
+MedialAxis_IsoSurface an iso-surface (T = 0.5) of each selected PairMesh
+MedialAxis_ExportPairMesh  selected PairMesh objects to .vtu or TetGen .node/.ele
 
 Errors go to the Report view (and the status bar); commands never raise into
 FreeCAD and never open a modal dialog on error.
@@ -18,9 +20,10 @@ import FreeCADGui as Gui
 from . import icon
 
 TOOLBAR = ["MedialAxis_Compute", "Separator", "MedialAxis_Export", "MedialAxis_Evaluate", "Separator",
-           "MedialAxis_PairMesh", "MedialAxis_IsoSurface"]
+           "MedialAxis_PairMesh", "MedialAxis_IsoSurface", "MedialAxis_ExportPairMesh"]
 MENU = TOOLBAR
-CONTEXT_MENU = ["MedialAxis_Compute", "MedialAxis_Export", "MedialAxis_Evaluate"]
+CONTEXT_MENU = ["MedialAxis_Compute", "MedialAxis_Export", "MedialAxis_Evaluate", "MedialAxis_PairMesh",
+                "MedialAxis_IsoSurface", "MedialAxis_ExportPairMesh"]
 
 
 def report_error(message):
@@ -214,22 +217,139 @@ class EvaluateCommand:
             report_message(f"evaluation of '{obj.Label}' written to the Report view")
 
 
-class NotYetCommand:
-    def __init__(self, pixmap, text, what):
-        self.pixmap, self.text, self.what = pixmap, text, what
+def pair_mesh_targets(objects):
+    """(objects a pair-mesh can be made of, error messages for the rest):
+    solids and MedialAxis objects (a sheet stands for its MedialAxis)."""
+    from cadmedial import document, pair_document
 
+    targets, errors = [], []
+    for obj in objects:
+        if document.is_sheet(obj):
+            obj = obj.MedialAxis
+        if obj in targets:
+            continue
+        try:
+            pair_document.pair_mesh_sources(obj)
+            targets.append(obj)
+        except ValueError as e:
+            errors.append(str(e))
+    return targets, errors
+
+
+def selected_pair_meshes():
+    from cadmedial import pair_document
+
+    out = []
+    for obj in selected_objects():
+        if pair_document.is_iso_surface(obj):
+            obj = obj.PairMesh
+        if pair_document.is_pair_mesh(obj) and obj not in out:
+            out.append(obj)
+    return out
+
+
+class PairMeshCommand:
     def GetResources(self):
         return {
-            "Pixmap": icon(self.pixmap),
-            "MenuText": self.text + " (not available yet)",
-            "ToolTip": f"{self.what} Comes later (DESIGN.md section 5); not available yet.",
+            "Pixmap": icon("PairMesh.svg"),
+            "MenuText": "Pair-Mesh",
+            "ToolTip": "Pair-mesh of the selected solids (or of the solid of a selected medial axis): "
+            "tetrahedra linking the inner Voronoi diagram of the samples to the boundary, as a parametric "
+            "FEM mesh with one group per element type (face-vertex, edge-edge, vertex-face). Validity "
+            "(inverted elements, volume against the exact solid) goes to the Report view.",
         }
 
     def IsActive(self):
-        return False
+        return _document() is not None and bool(Gui.Selection.getSelection())
 
     def Activated(self):
-        report_error(f"{self.text} is not available yet")
+        try:
+            targets, errors = pair_mesh_targets(selected_objects())
+            for e in errors:
+                report_error(e)
+            if not targets:
+                if not errors:
+                    report_error("select a solid or a medial axis first")
+                return
+            if Gui.Control.activeDialog():
+                report_error("close the open task panel first")
+                return
+            from . import pair_mesh_panel
+
+            Gui.Control.showDialog(pair_mesh_panel.PairMeshTaskPanel(targets))
+        except Exception as e:  # noqa: BLE001 - never let an exception reach FreeCAD
+            report_error(f"{type(e).__name__}: {e}")
+
+
+class IsoSurfaceCommand:
+    def GetResources(self):
+        return {
+            "Pixmap": icon("IsoSurface.svg"),
+            "MenuText": "Iso-surface",
+            "ToolTip": "Iso-parametric surface of the selected pair-mesh at T = 0.5 (a parametric mesh; "
+            "change T between 0, the medial side, and 1, the boundary, in its properties)",
+        }
+
+    def IsActive(self):
+        return bool(selected_pair_meshes())
+
+    def Activated(self):
+        from cadmedial import pair_document
+
+        objects = selected_pair_meshes()
+        if not objects:
+            report_error("select a pair-mesh first")
+            return
+        doc = _document()
+        doc.openTransaction("Iso-surface")
+        try:
+            for obj in objects:
+                iso = pair_document.add_iso_surface(doc, obj, 0.5)
+                report_message(f"'{iso.Label}': {iso.Triangles} triangles")
+            doc.commitTransaction()
+        except Exception as e:  # noqa: BLE001
+            doc.abortTransaction()
+            report_error(f"{type(e).__name__}: {e}")
+
+
+class ExportPairMeshCommand:
+    FILTERS = "VTK unstructured grid, type per element (*.vtu);;TetGen .node/.ele (*.node)"
+
+    def GetResources(self):
+        return {
+            "Pixmap": icon("Export.svg"),
+            "MenuText": "Export pair-mesh...",
+            "ToolTip": "Write the selected pair-meshes to .vtu (ParaView; cell data type and on_sheets, point "
+            "data boundary) or TetGen .node/.ele",
+        }
+
+    def IsActive(self):
+        return bool(selected_pair_meshes())
+
+    def Activated(self):
+        from PySide2 import QtWidgets
+
+        from cadmedial import pair_document
+
+        objects = selected_pair_meshes()
+        if not objects:
+            report_error("select a pair-mesh to export")
+            return
+        start = os.path.join(_start_dir(), _safe_name(objects[0].Label) + ".vtu")
+        path, chosen = QtWidgets.QFileDialog.getSaveFileName(Gui.getMainWindow(), "Export pair-mesh", start,
+                                                             self.FILTERS)
+        if not path:
+            return
+        if not os.path.splitext(path)[1]:
+            path += ".node" if "node" in chosen else ".vtu"
+        stem, ext = os.path.splitext(path)
+        for obj in objects:
+            target = path if len(objects) == 1 else f"{stem}_{_safe_name(obj.Label)}{ext}"
+            try:
+                written = pair_document.export_pair_mesh(obj, target)
+                report_message(f"wrote {written if isinstance(written, str) else ', '.join(written)}")
+            except Exception as e:  # noqa: BLE001
+                report_error(f"could not export '{obj.Label}' to {target}: {e}")
 
 
 _registered = False
@@ -242,10 +362,7 @@ def register():
     Gui.addCommand("MedialAxis_Compute", ComputeCommand())
     Gui.addCommand("MedialAxis_Export", ExportCommand())
     Gui.addCommand("MedialAxis_Evaluate", EvaluateCommand())
-    Gui.addCommand("MedialAxis_PairMesh", NotYetCommand(
-        "PairMesh.svg", "Pair-Mesh",
-        "Pair-mesh: a FEM tetrahedral mesh linking the medial sheets and the boundary."))
-    Gui.addCommand("MedialAxis_IsoSurface", NotYetCommand(
-        "IsoSurface.svg", "Iso-surface",
-        "Iso-surfaces between the medial axis (t = 0) and the boundary (t = 1) from the pair-mesh."))
+    Gui.addCommand("MedialAxis_PairMesh", PairMeshCommand())
+    Gui.addCommand("MedialAxis_IsoSurface", IsoSurfaceCommand())
+    Gui.addCommand("MedialAxis_ExportPairMesh", ExportPairMeshCommand())
     _registered = True

@@ -22,16 +22,26 @@ from . import icon
 #: The open panel (for scripts and tests: task_panel.current.accept()).
 current = None
 
-STAGE_TEXT = {"read": "reading", "sample": "sampling", "medial": "medial axis", "done": "done"}
+STAGE_TEXT = {"read": "reading", "sample": "sampling", "medial": "medial axis", "pair_mesh": "pair-mesh",
+              "prepare": "building the FEM mesh", "done": "done"}
 STAGE_START = {"read": 0.0, "sample": 0.05, "medial": 0.35, "done": 1.0}
+#: With the pair-mesh, the medial stage is shorter than the pair-mesh stage (exact cell labels).
+PAIR_MESH_STAGE_START = {"read": 0.0, "sample": 0.05, "medial": 0.2, "pair_mesh": 0.35, "prepare": 0.7,
+                         "done": 1.0}
 
 
 class _Job:
     """One run in a worker thread: a list of (label, BREP text) to compute."""
 
-    def __init__(self, items, spacing, theta, rho, check_inside):
+    def __init__(self, items, spacing, theta, rho, check_inside, pair_mesh=False, prepare=None):
+        """prepare(result): optional work on each result in the worker thread
+        (e.g. building a FEM mesh) so the main thread has less to do."""
         self.items = items
+        self.prepare = prepare
         self.params = dict(spacing=spacing, theta=theta, rho=rho, check_inside=check_inside)
+        if pair_mesh:
+            self.params["pair_mesh"] = True
+        self.stage_start = PAIR_MESH_STAGE_START if pair_mesh else STAGE_START
         self.cancel = threading.Event()
         self.results = []
         self.error = None
@@ -54,6 +64,9 @@ class _Job:
                 start = time.perf_counter()
                 results = cadmedial.compute(brep, cancel=self.cancel, progress=progress, **self.params)
                 results[0].seconds = time.perf_counter() - start  # wall time, as a recompute measures it
+                if self.prepare is not None:
+                    self.stage = ("prepare", k)
+                    self.prepare(results[0])
                 self.results.append(results[0])
         except BaseException as e:  # noqa: BLE001 - reported in the main thread
             self.error = e
@@ -64,7 +77,7 @@ class _Job:
 
     def fraction(self):
         stage, k = self.stage
-        return min(1.0, (k + STAGE_START.get(stage, 0.0)) / max(1, len(self.items)))
+        return min(1.0, (k + self.stage_start.get(stage, 0.0)) / max(1, len(self.items)))
 
 
 class MedialAxisTaskPanel:

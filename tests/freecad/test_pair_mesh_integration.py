@@ -1,0 +1,194 @@
+"""freecadcmd test of the PairMesh (Fem::FemMeshObjectPython) and
+PairMeshIsoSurface objects (run by run_freecad_test.sh with the addon
+installed into a temporary FreeCAD home).
+
+Reference facts come from FreeCAD itself, not from cadmedial: the source is
+a parametric Part::Box, its exact volume is Part's shape.Volume. Exits 1 on
+any failure (freecadcmd exits 0 even when a script raises)."""
+
+import os
+import sys
+import time
+import traceback
+
+failures = []
+
+
+def check(condition, what):
+    print(("ok    " if condition else "FAIL  ") + what, flush=True)
+    if not condition:
+        failures.append(what)
+    return condition
+
+
+def expect_error(function, exception_types, contains, what):
+    try:
+        function()
+    except exception_types as e:
+        return check(contains.lower() in str(e).lower(), f"{what}: {type(e).__name__}: {e}")
+    except Exception as e:  # noqa: BLE001
+        return check(False, f"{what}: unexpected {type(e).__name__}: {e}")
+    return check(False, f"{what}: no error raised")
+
+
+def healthy(obj):
+    return not ({"Invalid", "Error", "Touched"} & set(obj.State))
+
+
+def group_sizes(fem):
+    return {fem.getGroupName(g): len(fem.getGroupElements(g)) for g in fem.Groups}
+
+
+def main():
+    import FreeCAD as App
+    import numpy as np
+    import Part
+    import Points
+
+    import cadmedial
+    from cadmedial import pair_document
+
+    tmp = os.environ["CADMEDIAL_TEST_TMP"]
+    doc = App.newDocument("PairMeshTest")
+    box = doc.addObject("Part::Box", "Box")
+    box.Length, box.Width, box.Height = 40, 30, 20
+    doc.recompute()
+
+    start = time.perf_counter()
+    (pm,) = pair_document.add_pair_mesh(doc, box)
+    seconds = time.perf_counter() - start
+    check(healthy(pm) and pm.TypeId == "Fem::FemMeshObjectPython", f"PairMesh object created in {seconds:.2f} s")
+    fem = pm.FemMesh
+    print(f"      {pm.Tetrahedra} tetrahedra ({pm.FaceVertex} FV, {pm.EdgeEdge} EE, {pm.VertexFace} VF), "
+          f"{pm.Nodes} nodes, inverted {pm.Inverted}, volume error {pm.VolumeError:.3g} %, {pm.Seconds} s")
+    result = pair_document.get_pair_mesh(pm)
+    check(fem.VolumeCount == pm.Tetrahedra == result.tet_count and fem.TetraCount == pm.Tetrahedra,
+          f"FemMesh holds {fem.VolumeCount} volumes = {pm.Tetrahedra} tetrahedra")
+    check(fem.NodeCount == pm.Nodes == result.node_count, f"FemMesh holds {fem.NodeCount} nodes")
+    check(pm.FaceVertex + pm.EdgeEdge + pm.VertexFace == pm.Tetrahedra and min(pm.FaceVertex, pm.EdgeEdge,
+                                                                               pm.VertexFace) > 0,
+          "counts per type add up")
+    check(group_sizes(fem) == {"FaceVertex": pm.FaceVertex, "EdgeEdge": pm.EdgeEdge, "VertexFace": pm.VertexFace},
+          f"one FEM volume group per type: {group_sizes(fem)}")
+    exact = box.Shape.Volume
+    check(abs(pm.ExactVolume - exact) <= 1e-9 * exact, f"ExactVolume {pm.ExactVolume} = Part volume {exact}")
+    check(pm.Inverted == 0 and pm.Valid, f"no inverted element, valid (inverted before repair "
+                                         f"{pm.InvertedBeforeRepair})")
+    check(abs(pm.EnclosedVolume - exact) <= 0.01 * exact, f"enclosed {pm.EnclosedVolume:.6f} within 1 % of {exact}")
+    # The FEM mesh itself (its nodes and element connectivity) fills the box:
+    # signed volumes from FemMesh data add up to Part's volume, none negative.
+    coords = {i: (v.x, v.y, v.z) for i, v in fem.Nodes.items()}
+    quads = np.array([[coords[n] for n in fem.getElementNodes(e)] for e in fem.Volumes])
+    signed = np.einsum("ij,ij->i", quads[:, 1] - quads[:, 0],
+                       np.cross(quads[:, 2] - quads[:, 0], quads[:, 3] - quads[:, 0])) / 6.0
+    check(abs(signed.sum() - exact) <= 0.01 * exact and signed.min() > -1e-9,
+          f"FemMesh elements: volume {signed.sum():.6f}, min element volume {signed.min():.3g}")
+    # A FEM node at the same place as the array node (ids = index + 1).
+    k = result.node_count // 2
+    node = fem.Nodes[k + 1]
+    check(np.allclose([node.x, node.y, node.z], result.nodes[k]), "node ids are array index + 1")
+
+    # --- element filter: only the FemMesh changes ------------------------------------
+    pm.Elements = "EdgeEdge"
+    check(pm.FemMesh.VolumeCount == pm.EdgeEdge and list(group_sizes(pm.FemMesh)) == ["EdgeEdge"],
+          f"Elements = EdgeEdge: {pm.FemMesh.VolumeCount} volumes")
+    pm.Elements = "All"
+    check(pm.FemMesh.VolumeCount == pm.Tetrahedra, "Elements = All again")
+
+    # --- iso-surfaces -------------------------------------------------------------------
+    iso = pair_document.add_iso_surface(doc, pm, 1.0)
+    check(healthy(iso) and iso.Mesh.CountFacets == pm.BoundaryTriangles,
+          f"iso T=1: {iso.Mesh.CountFacets} facets = {pm.BoundaryTriangles} boundary triangles")
+    check(abs(iso.Mesh.Volume - exact) <= 0.01 * exact, f"iso T=1 mesh volume {iso.Mesh.Volume:.3f}")
+    iso.T = 0.5
+    doc.recompute()
+    check(healthy(iso) and 0 < iso.Mesh.Volume < 0.99 * exact and iso.Mesh.isSolid(),
+          f"iso T=0.5: {iso.Mesh.CountFacets} facets, closed, volume {iso.Mesh.Volume:.1f}")
+    expect_error(lambda: pair_document.add_iso_surface(doc, pm, 2.0), ValueError, "[0, 1]", "iso t=2")
+
+    # --- parametric: source and spacing changes recompute -----------------------------
+    old_tets = pm.Tetrahedra
+    box.Length = 50
+    doc.recompute()
+    check(healthy(pm) and healthy(iso), "after a source change: objects recomputed")
+    check(abs(pm.ExactVolume - box.Shape.Volume) <= 1e-9 * box.Shape.Volume and abs(pm.ExactVolume - 30000) < 1e-6,
+          f"ExactVolume follows the source ({pm.ExactVolume})")
+    check(abs(pm.EnclosedVolume - 30000) <= 300 and pm.FemMesh.VolumeCount == pm.Tetrahedra != old_tets,
+          f"new mesh: {pm.Tetrahedra} tetrahedra, enclosed {pm.EnclosedVolume:.3f}")
+    check(40 < iso.Mesh.BoundBox.XMax < 50, f"iso-surface follows the pair-mesh (x max {iso.Mesh.BoundBox.XMax:.2f})")
+    before = pm.Tetrahedra
+    pm.Spacing = 1.2  # finer than the automatic diagonal / 40 = 1.54
+    doc.recompute()
+    check(healthy(pm) and pm.Tetrahedra > before and abs(pm.SpacingUsed.Value - 1.2) < 1e-9,
+          f"Spacing 1.2: {pm.Tetrahedra} tetrahedra (was {before}), inverted {pm.Inverted}")
+    # An unchanged recompute reuses the stored result.
+    pm.touch()
+    start = time.perf_counter()
+    doc.recompute()
+    elapsed = time.perf_counter() - start
+    # Computing costs pm.Seconds and rebuilding the FemMesh about 1 s here; reuse costs neither.
+    check(elapsed < 0.6 and healthy(pm),
+          f"unchanged recompute reuses the result ({elapsed:.2f} s; computing took {pm.Seconds:.2f} s)")
+
+    # --- export ----------------------------------------------------------------------------
+    vtu = pair_document.export_pair_mesh(pm, os.path.join(tmp, "pm.vtu"))
+    node, ele = pair_document.export_pair_mesh(pm, os.path.join(tmp, "pm.node"))
+    with open(ele) as f:
+        header = [line for line in f if not line.startswith("#")][0].split()
+    check(os.path.getsize(vtu) > 0 and int(header[0]) == pm.Tetrahedra, f"exported {vtu}, {ele}")
+
+    # --- from a medial axis: its source and parameters ---------------------------------------
+    doc2 = App.newDocument("FromAxis")
+    block = doc2.addObject("Part::Box", "Block")
+    block.Length, block.Width, block.Height = 20, 10, 6
+    doc2.recompute()
+    (axis,) = cadmedial.add_to_document(doc2, block, spacing=1.5)
+    (pm2,) = cadmedial.add_pair_mesh(doc2, axis)  # the package-level helper
+    check(pm2.Source == block and pm2.Spacing.Value == 1.5 and healthy(pm2) and pm2.Inverted == 0,
+          f"pair-mesh of a medial axis' solid: spacing {pm2.Spacing.Value}, {pm2.Tetrahedra} tetrahedra")
+    check(abs(pm2.EnclosedVolume - 1200) <= 12, f"block: enclosed {pm2.EnclosedVolume:.3f} vs 1200")
+
+    # --- bad sources --------------------------------------------------------------------------
+    face = doc.addObject("Part::Feature", "Face")
+    face.Shape = Part.makePlane(10, 10)
+    cloud = doc.addObject("Points::Feature", "Cloud")
+    cloud.Points = Points.Points([App.Vector(*p) for p in np.random.default_rng(2).random((40, 3)).tolist()])
+    doc.recompute()
+    expect_error(lambda: pair_document.add_pair_mesh(doc, face), ValueError, "no solid", "a face")
+    expect_error(lambda: pair_document.add_pair_mesh(doc, cloud), ValueError, "B-rep", "a point cloud")
+    expect_error(lambda: pair_document.add_pair_mesh(doc, pm), ValueError, "pair-mesh result", "a pair-mesh")
+    doc.removeObject(face.Name)
+    doc.removeObject(cloud.Name)
+
+    # --- save / reopen ---------------------------------------------------------------------------
+    path = os.path.join(tmp, "pair_mesh.FCStd")
+    tets, volumes = pm.Tetrahedra, pm.FemMesh.VolumeCount
+    doc.saveAs(path)
+    App.closeDocument(doc.Name)
+    from cadmedial import document
+
+    document._results.clear()  # the in-memory cache: force the arrays to come from the file
+    doc = App.openDocument(path)
+    pm = next(o for o in doc.Objects if pair_document.is_pair_mesh(o))
+    iso = next(o for o in doc.Objects if pair_document.is_iso_surface(o))
+    check(pm.Tetrahedra == tets and pm.FemMesh.VolumeCount == volumes and len(pm.FemMesh.Groups) == 3,
+          f"reopened: {pm.FemMesh.VolumeCount} volumes, {len(pm.FemMesh.Groups)} groups")
+    loaded = pair_document.get_pair_mesh(pm)
+    check(loaded is not None and loaded.tet_count == tets, "reopened: arrays from ResultData")
+    iso.T = 0.25
+    doc.recompute()
+    check(healthy(iso) and iso.Triangles > 0 and healthy(pm), "reopened: iso-surface recomputes from the stored arrays")
+
+
+def run():
+    try:
+        main()
+    except Exception:  # noqa: BLE001
+        traceback.print_exc()
+        failures.append("exception")
+    print(f"{len(failures)} failure(s)" + (": " + "; ".join(failures) if failures else ""), flush=True)
+    sys.stdout.flush()
+    os._exit(1 if failures else 0)
+
+
+run()
