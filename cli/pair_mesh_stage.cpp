@@ -49,26 +49,43 @@ nlohmann::json pairMeshReport(const PairMesh& mesh, const TopoDS_Shape& solid) {
           {"pass", v.valid() && volumeOk}};
 }
 
-nlohmann::json runPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& samples, const TopoDS_Shape& solid,
-                                const MedialComplex& axis, const std::vector<double>& isoValues,
-                                const std::string& dir) {
+PairMeshStage buildPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& samples, const TopoDS_Shape& solid,
+                                 const MedialComplex& axis) {
+  PairMeshStage stage;
   auto t = Clock::now();
+  // Centres farther than h/2 from the closed reconstruction take its side;
+  // the rest go to OCCT's classifier.
   const CellClassification cells = classifyCellsBySolid(dv, solid, &samples, 0.5 * samples.spacing);
   const double classifySeconds = secondsSince(t);
-  const PairMesh mesh = buildPairMesh(dv, samples, cells.inner, &axis);
-
+  stage.mesh = buildPairMesh(dv, samples, cells.inner, &axis);
+  const PairMesh& mesh = stage.mesh;
   t = Clock::now();
-  nlohmann::json report = pairMeshReport(mesh, solid);
+  nlohmann::json& report = stage.report;
+  report = pairMeshReport(mesh, solid);
   const double checkSeconds = secondsSince(t);
   report["on_sheets"] = std::count(mesh.onSheets.begin(), mesh.onSheets.end(), 1);
   report["cells_classified_exactly"] = cells.exactQueries;
   report["cells_decided_by_reconstruction"] = cells.decidedByMesh;
   report["inverted_before_repair"] = mesh.counts.invertedBeforeRepair;
   report["moved_voronoi_nodes"] = mesh.counts.movedNodes;
+  report["welded_voronoi_nodes"] = mesh.counts.weldedNodes;
   report["split_boundary_edges"] = mesh.counts.splitEdges;
   report["inverted_after_repair"] = mesh.counts.invertedAfterRepair;
+  report["seconds"] = {{"classify_cells", classifySeconds},
+                       {"build", mesh.seconds},
+                       {"repair", mesh.repairSeconds},
+                       {"check", checkSeconds},
+                       {"total", classifySeconds + mesh.seconds + mesh.repairSeconds + checkSeconds}};
+  return stage;
+}
 
-  t = Clock::now();
+nlohmann::json runPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& samples, const TopoDS_Shape& solid,
+                                const MedialComplex& axis, const std::vector<double>& isoValues,
+                                const std::string& dir) {
+  PairMeshStage stage = buildPairMeshStage(dv, samples, solid, axis);
+  const PairMesh& mesh = stage.mesh;
+  nlohmann::json& report = stage.report;
+  const auto t = Clock::now();
   std::vector<std::string> isoFiles;
   tbb::parallel_invoke([&] { writePairMeshVtu(dir + "/pairmesh.vtu", mesh); },
                        [&] { writePairMeshTetgen(dir + "/pairmesh", mesh); },
@@ -78,11 +95,7 @@ nlohmann::json runPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& samp
                        });
   for (double iso : isoValues) isoFiles.push_back(isoSurfaceFileName(iso));
   report["iso_files"] = isoFiles;
-  report["seconds"] = {{"classify_cells", classifySeconds},
-                       {"build", mesh.seconds},
-                       {"repair", mesh.repairSeconds},
-                       {"check", checkSeconds},
-                       {"write", secondsSince(t)}};
+  report["seconds"]["write"] = secondsSince(t);
   return report;
 }
 

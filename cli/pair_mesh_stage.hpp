@@ -19,6 +19,15 @@ namespace cadmedial {
 // and its enclosed volume is within this fraction of the exact solid volume.
 constexpr double kPairMeshVolumeTolerance = 0.01;
 
+// Exact inner labels, construction, repair and report (no files): the
+// shared part of `run --pair-mesh` and the Python module.
+struct PairMeshStage {
+  PairMesh mesh;
+  nlohmann::json report;  // pairMeshReport + labels, repair counts, times
+};
+PairMeshStage buildPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& samples, const TopoDS_Shape& solid,
+                                 const MedialComplex& axis);
+
 // Builds and writes pairmesh.vtu, pairmesh.node/.ele and iso_<t>.ply for each
 // t into dir; returns the "pair_mesh" summary object.
 nlohmann::json runPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& samples, const TopoDS_Shape& solid,

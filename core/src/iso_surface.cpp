@@ -12,6 +12,7 @@ namespace cadmedial {
 
 IsoSurface isoSurface(const PairMesh& m, double t) {
   IsoSurface out;
+  out.t = t;
   const bool atBoundary = t >= 1.0, atMedial = t <= 0.0;
   // Node of interim edge (s, v); merged per sample at t = 1 and per Voronoi
   // node at t = 0, where those nodes coincide.
@@ -22,20 +23,28 @@ IsoSurface isoSurface(const PairMesh& m, double t) {
     if (atBoundary || atMedial) {
       const Index key = atBoundary ? s : v;
       auto [it, fresh] = single.emplace(key, static_cast<Index>(out.points.size()));
-      if (fresh) out.points.push_back(m.nodes[key]);
+      if (fresh) {
+        out.points.push_back(m.nodes[key]);
+        out.pointNodes.push_back(atBoundary ? std::array<Index, 2>{s, kNoIndex} : std::array<Index, 2>{kNoIndex, v});
+      }
       return it->second;
     }
     const Index id = nodeOf.insert(s, v, static_cast<Index>(out.points.size()));
     if (id == out.points.size()) {
       const Vec3 &ps = m.nodes[s], &pv = m.nodes[v];
       out.points.push_back({(1 - t) * pv[0] + t * ps[0], (1 - t) * pv[1] + t * ps[1], (1 - t) * pv[2] + t * ps[2]});
+      out.pointNodes.push_back({s, v});
     }
     return id;
   };
+  Index current = 0;
   auto emit = [&](Index a, Index b, Index c) {
-    if (a != b && b != c && c != a) out.triangles.push_back({a, b, c});
+    if (a == b || b == c || c == a) return;
+    out.triangles.push_back({a, b, c});
+    out.element.push_back(current);
   };
   for (std::size_t i = 0; i < m.size(); ++i) {
+    current = static_cast<Index>(i);
     const auto& q = m.tets[i];
     switch (m.type[i]) {
       case PairElementType::FaceVertex:  // (a, c0, ci, cj): the polygon, facing a

@@ -4,6 +4,7 @@
 // the soup is oriented and made manifold first (non-manifold vertices are
 // duplicated by CGAL's soup repair, which can only add reported pairs of
 // faces touching at such a vertex, never hide a crossing).
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -11,6 +12,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <map>
 
@@ -20,9 +22,13 @@ namespace cadmedial {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso) {
-  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+namespace {
+
+// `key` identifies equal positions exactly (equal inputs of the same
+// construction); `point(i)` builds iso point i in Kernel.
+template <class Kernel, class Key, class KeyOf, class PointOf>
+IsoSurfaceIntersections check(const IsoSurface& iso, KeyOf keyOf, PointOf pointOf) {
+  using Mesh = CGAL::Surface_mesh<typename Kernel::Point_3>;
   IsoSurfaceIntersections result;
   if (iso.triangles.empty()) return result;
   // Flat elements (cospherical samples give coincident Voronoi nodes) cut
@@ -30,17 +36,19 @@ IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso) {
   // weld equal positions, drop triangles that collapse, and drop pairs of
   // opposite copies of one triangle (the two faces of a zero-thickness cut).
   // What is left touches only where it shares vertices, or truly crosses.
-  std::map<Vec3, std::size_t> weldedIndex;
+  std::map<Key, std::size_t> weldedIndex;
   std::vector<std::size_t> welded(iso.points.size());
-  std::vector<Kernel::Point_3> points;
+  std::vector<typename Kernel::Point_3> points;
   for (std::size_t i = 0; i < iso.points.size(); ++i) {
-    auto [it, fresh] = weldedIndex.emplace(iso.points[i], points.size());
-    if (fresh) points.emplace_back(iso.points[i][0], iso.points[i][1], iso.points[i][2]);
+    auto [it, fresh] = weldedIndex.emplace(keyOf(i), points.size());
+    if (fresh) points.push_back(pointOf(i));
     welded[i] = it->second;
   }
   std::map<std::array<std::size_t, 3>, std::vector<std::size_t>> byCorners;  // sorted corners -> faces
   std::vector<std::array<std::size_t, 3>> tris;
-  for (const auto& t : iso.triangles) {
+  std::vector<Index> source;  // per kept triangle: its element
+  for (std::size_t k = 0; k < iso.triangles.size(); ++k) {
+    const auto& t = iso.triangles[k];
     const std::array<std::size_t, 3> w{welded[t[0]], welded[t[1]], welded[t[2]]};
     if (w[0] == w[1] || w[1] == w[2] || w[2] == w[0]) {
       ++result.degenerateTriangles;
@@ -50,6 +58,7 @@ IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso) {
     std::sort(key.begin(), key.end());
     byCorners[key].push_back(tris.size());
     tris.push_back(w);
+    source.push_back(k < iso.element.size() ? iso.element[k] : kNoIndex);
   }
   auto sameOrientation = [](const std::array<std::size_t, 3>& a, const std::array<std::size_t, 3>& b) {
     for (int r = 0; r < 3; ++r)
@@ -65,18 +74,68 @@ IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso) {
           result.degenerateTriangles += 2;
         }
   std::vector<std::vector<std::size_t>> faces;
+  std::vector<Index> faceSource;
   faces.reserve(tris.size());
   for (std::size_t i = 0; i < tris.size(); ++i)
-    if (!dropped[i]) faces.push_back({tris[i][0], tris[i][1], tris[i][2]});
+    if (!dropped[i]) {
+      faces.push_back({tris[i][0], tris[i][1], tris[i][2]});
+      faceSource.push_back(source[i]);
+    }
   if (faces.empty()) return result;
   if (!PMP::is_polygon_soup_a_polygon_mesh(faces)) PMP::orient_polygon_soup(points, faces);
   Mesh mesh;
   PMP::polygon_soup_to_polygon_mesh(points, faces, mesh);
-  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
+  using Face = typename Mesh::Face_index;
+  std::vector<std::pair<Face, Face>> pairs;
   PMP::self_intersections(mesh, std::back_inserter(pairs));
   // CGAL reports a degenerate face f as the pair (f, f), and only so.
-  for (const auto& [f, g] : pairs) ++(f == g ? result.degenerateTriangles : result.intersectingPairs);
+  // Faces keep the soup's order (polygon_soup_to_polygon_mesh adds them in order).
+  for (const auto& [f, g] : pairs) {
+    ++(f == g ? result.degenerateTriangles : result.intersectingPairs);
+    if (f != g && result.elementPairs.size() < 100)
+      result.elementPairs.push_back({faceSource[static_cast<std::size_t>(f)], faceSource[static_cast<std::size_t>(g)]});
+  }
   return result;
+}
+
+}  // namespace
+
+IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso) {
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  IsoSurfaceIntersections r = check<Kernel, Vec3>(
+      iso, [&](std::size_t i) { return iso.points[i]; },
+      [&](std::size_t i) { return Kernel::Point_3(iso.points[i][0], iso.points[i][1], iso.points[i][2]); });
+  r.roundedCrossings = r.intersectingPairs;
+  return r;
+}
+
+IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso, const PairMesh& mesh) {
+  // The rounded points first (fast); only when they show crossings does the
+  // exact surface decide.
+  const IsoSurfaceIntersections rounded = isoSurfaceSelfIntersections(iso);
+  if (rounded.intersectingPairs == 0 || iso.pointNodes.size() != iso.points.size()) return rounded;
+  using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+  using Point = Kernel::Point_3;
+  const Kernel::FT t(iso.t), u = Kernel::FT(1) - t;
+  auto nodePoint = [&](Index n) { return Point(mesh.nodes[n][0], mesh.nodes[n][1], mesh.nodes[n][2]); };
+  auto at = [&](Index n) { return n == kNoIndex ? Vec3{NAN, NAN, NAN} : mesh.nodes[n]; };
+  IsoSurfaceIntersections exact = check<Kernel, std::pair<Vec3, Vec3>>(
+      iso,
+      [&](std::size_t i) {  // equal node positions give equal points
+        const auto& [s, v] = iso.pointNodes[i];
+        if (s == kNoIndex) return std::pair{Vec3{0, 0, 0}, at(v)};
+        if (v == kNoIndex) return std::pair{at(s), Vec3{0, 0, 0}};
+        return std::pair{at(s), at(v)};
+      },
+      [&](std::size_t i) {
+        const auto& [s, v] = iso.pointNodes[i];
+        if (s == kNoIndex) return nodePoint(v);
+        if (v == kNoIndex) return nodePoint(s);
+        const Point ps = nodePoint(s), pv = nodePoint(v);
+        return Point(u * pv.x() + t * ps.x(), u * pv.y() + t * ps.y(), u * pv.z() + t * ps.z());
+      });
+  exact.roundedCrossings = rounded.intersectingPairs;
+  return exact;
 }
 
 }  // namespace cadmedial

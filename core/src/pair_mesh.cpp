@@ -52,10 +52,11 @@ class Builder {
  public:
   Builder(const DelaunayVoronoi& dv, const SampleSet& samples, const std::vector<std::uint8_t>& cellInner,
           const MedialComplex* axis)
-      : dv_(dv), dt_(dv.triangulation()), inner_(cellInner), sheets_(sheetMembership(axis, dv.cellCount())) {
+      : dv_(dv), dt_(dv.triangulation()), inner_(cellInner), spacing_(samples.spacing), sheets_(sheetMembership(axis, dv.cellCount())) {
     if (cellInner.size() != dv.cellCount()) throw std::invalid_argument("pair-mesh: one inner label per cell needed");
     m_.nodes = samples.points;
     m_.sampleNodes = samples.points.size();
+    m_.spacing = samples.spacing;
     m_.nodeCell.assign(m_.sampleNodes, kNoIndex);
     m_.boundaryNode.assign(m_.sampleNodes, 1);
     nodeOfCell_.assign(dv.cellCount(), kNoIndex);
@@ -232,6 +233,7 @@ class Builder {
   const DelaunayVoronoi& dv_;
   const DelaunayVoronoi::Triangulation& dt_;
   const std::vector<std::uint8_t>& inner_;
+  double spacing_;
   SheetMembership sheets_;
   std::vector<Index> nodeOfCell_;
   PairMesh m_;

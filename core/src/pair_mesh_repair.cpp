@@ -258,10 +258,91 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
   return bad;
 }
 
+// Voronoi nodes closer than h/200 are, on planar parts, one vertex of
+// nearly cospherical samples (the symmetric triplets along convex edges)
+// spread by the samples' rounding; the slivers between them cut into
+// iso-surface triangles whose rounded corners cross. Each cluster of such
+// nodes (joined through elements) goes to one member's position when that
+// leaves no more elements needing repair around it than before (on curved
+// parts close nodes are often genuinely distinct, and then the move is
+// refused). Returns the number of nodes moved.
+std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance) {
+  if (!(tolerance > 0)) return 0;
+  const std::size_t n = m.nodes.size();
+  std::vector<Index> offsets(n + 1, 0), incident;
+  for (const auto& t : m.tets)
+    for (Index v : t) ++offsets[v + 1];
+  for (std::size_t v = 0; v < n; ++v) offsets[v + 1] += offsets[v];
+  incident.resize(offsets[n]);
+  {
+    std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
+    for (std::size_t i = 0; i < m.tets.size(); ++i)
+      for (Index v : m.tets[i]) incident[fill[v]++] = static_cast<Index>(i);
+  }
+  // Clusters: nodes joined through elements by pairs closer than tolerance.
+  std::vector<Index> parent(n);
+  for (std::size_t v = 0; v < n; ++v) parent[v] = static_cast<Index>(v);
+  auto find = [&](Index v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  const double limit = tolerance * tolerance;
+  for (const auto& t : m.tets)
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+        if (!m.isBoundaryNode(t[a]) && !m.isBoundaryNode(t[b]) && squaredLength(m.nodes[t[a]], m.nodes[t[b]]) <= limit)
+          parent[find(t[a])] = find(t[b]);
+  std::vector<std::vector<Index>> clusters;
+  {
+    std::vector<Index> slot(n, kNoIndex);
+    for (Index v = 0; v < n; ++v) {
+      if (m.isBoundaryNode(v)) continue;
+      const Index r = find(v);
+      if (slot[r] == kNoIndex) {
+        slot[r] = static_cast<Index>(clusters.size());
+        clusters.emplace_back();
+      }
+      clusters[slot[r]].push_back(v);
+    }
+  }
+  std::vector<std::uint32_t> seen(m.tets.size(), 0);
+  std::uint32_t stamp = 0;
+  auto badAroundSet = [&](const std::vector<Index>& set) {
+    ++stamp;
+    std::size_t count = 0;
+    for (Index v : set)
+      for (Index k = offsets[v]; k < offsets[v + 1]; ++k)
+        if (seen[incident[k]] != stamp) {
+          seen[incident[k]] = stamp;
+          count += needsRepair(m, incident[k]) ? 1 : 0;
+        }
+    return count;
+  };
+  std::size_t welded = 0;
+  for (const auto& cluster : clusters) {
+    if (cluster.size() < 2) continue;
+    std::vector<Vec3> start;
+    for (Index v : cluster) start.push_back(m.nodes[v]);
+    const std::size_t before = badAroundSet(cluster);
+    bool done = false;
+    for (std::size_t k = 0; k < cluster.size() && !done; ++k) {  // onto each member's position in turn
+      for (Index v : cluster) m.nodes[v] = start[k];
+      done = badAroundSet(cluster) <= before;
+    }
+    if (done) {
+      welded += cluster.size() - 1;
+    } else {
+      for (std::size_t k = 0; k < cluster.size(); ++k) m.nodes[cluster[k]] = start[k];
+    }
+  }
+  return welded;
+}
+
 }  // namespace
 
 std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, int rounds) {
   m.counts.invertedBeforeRepair = countNegative(m);
+  m.counts.weldedNodes += weldCloseVoronoiNodes(m, m.spacing / 200);
   std::vector<std::uint8_t> moved;
   if (moveVoronoiNodes(m, dv, rounds, moved) > 0) {
     m.counts.splitEdges = splitBoundaryEdges(m);

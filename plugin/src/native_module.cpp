@@ -254,7 +254,7 @@ py::list compute(const std::string& source, double spacing, double theta, double
       const DelaunayVoronoi dv(samples.points);
       runs[i].medial = computeCadMedial(dv, samples, params, oracle);
       progress.report("pair_mesh", i, n);
-      runs[i].pairMesh = runPairMesh(dv, samples, input.solids[i], runs[i].medial);
+      runs[i].pairMesh = buildPairMeshStage(dv, samples, input.solids[i], runs[i].medial);
     }
     progress.report("done", n, n);
   });

@@ -26,7 +26,7 @@ double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(
 // The one place that says which nodes lie on the boundary. The lead is adding
 // PairMesh::isBoundaryNode (boundary-edge splitting appends boundary nodes
 // after the Voronoi nodes); switch to it here when it lands.
-bool boundaryNode(const PairMesh& m, Index n) { return m.isSampleNode(n); }
+bool boundaryNode(const PairMesh& m, Index n) { return m.isBoundaryNode(n); }
 
 template <class T, std::size_t N, class Out>
 py::array_t<Out> rows(const std::vector<std::array<T, N>>& v) {
@@ -89,11 +89,23 @@ PairMesh pairMeshFromArrays(const DoubleArray& nodes, const IntArray& tets, cons
   if (nodeIsBoundary) {
     if (nodeIsBoundary->ndim() != 1 || static_cast<std::size_t>(nodeIsBoundary->shape(0)) != nn)
       throw py::value_error("node_is_boundary must have one value per node");
-    // The writers take samples as the leading nodes (sampleNodes). When
-    // boundary-edge splitting lands, its appended boundary nodes need the
-    // lead's PairMesh field set here as well.
+    // Samples lead; split points of boundary edges come after the Voronoi nodes.
     const std::uint8_t* b = nodeIsBoundary->data();
     m.sampleNodes = static_cast<std::size_t>(std::find(b, b + nn, 0) - b);
+    m.boundaryNode.assign(b, b + nn);
+  } else {
+    // From the element types: the boundary corners of each kind.
+    m.boundaryNode.assign(nn, 0);
+    for (std::size_t i = 0; i < nt; ++i) {
+      const auto& t = m.tets[i];
+      switch (m.type[i]) {
+        case PairElementType::FaceVertex: m.boundaryNode[t[0]] = 1; break;
+        case PairElementType::EdgeEdge: m.boundaryNode[t[0]] = m.boundaryNode[t[1]] = 1; break;
+        case PairElementType::VertexFace: m.boundaryNode[t[1]] = m.boundaryNode[t[2]] = m.boundaryNode[t[3]] = 1; break;
+      }
+    }
+    m.sampleNodes = static_cast<std::size_t>(std::find(m.boundaryNode.begin(), m.boundaryNode.end(), 0) -
+                                             m.boundaryNode.begin());
   }
   m.nodeCell.assign(nn, kNoIndex);
   return m;
@@ -144,33 +156,6 @@ void writePairMesh(const std::string& path, const std::string& format, const Dou
 }
 
 }  // namespace
-
-PairMeshRun runPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, const TopoDS_Shape& solid,
-                        const MedialComplex& axis) {
-  PairMeshRun run;
-  auto t = Clock::now();
-  // As in `cadmedial run --pair-mesh`: centres farther than h/2 from the
-  // reconstructed surface take its side, the rest go to OCCT.
-  const CellClassification cells = classifyCellsBySolid(dv, solid, &samples, 0.5 * samples.spacing);
-  const double classifySeconds = secondsSince(t);
-  run.mesh = buildPairMesh(dv, samples, cells.inner, &axis);
-  t = Clock::now();
-  run.report = pairMeshReport(run.mesh, solid);
-  const double checkSeconds = secondsSince(t);
-  const PairMesh& m = run.mesh;
-  run.report["on_sheets"] = std::count(m.onSheets.begin(), m.onSheets.end(), 1);
-  run.report["cells_classified_exactly"] = cells.exactQueries;
-  run.report["cells_decided_by_reconstruction"] = cells.decidedByMesh;
-  run.report["inverted_before_repair"] = m.counts.invertedBeforeRepair;
-  run.report["moved_voronoi_nodes"] = m.counts.movedNodes;
-  run.report["inverted_after_repair"] = m.counts.invertedAfterRepair;
-  run.report["seconds"] = {{"classify_cells", classifySeconds},
-                           {"build", m.seconds},
-                           {"repair", m.repairSeconds},
-                           {"check", checkSeconds},
-                           {"total", classifySeconds + m.seconds + m.repairSeconds + checkSeconds}};
-  return run;
-}
 
 py::dict pairMeshToDict(const PairMeshRun& run) {
   const PairMesh& m = run.mesh;

@@ -13,17 +13,13 @@
 #include <TopoDS_Shape.hxx>
 #include <nlohmann/json.hpp>
 
+#include "pair_mesh_stage.hpp"
+
 namespace cadmedial {
 
-struct PairMeshRun {
-  PairMesh mesh;
-  nlohmann::json report;  // pairMeshReport + repair counts + seconds
-};
-
-// Runs without the GIL: classifies the cells of `dv` with OCCT's exact
-// classifier, builds and repairs the pair-mesh and checks it.
-PairMeshRun runPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, const TopoDS_Shape& solid,
-                        const MedialComplex& axis);
+// Runs without the GIL: exact labels, build, repair, check; the CLI's own
+// stage (cli/pair_mesh_stage.hpp), without files.
+using PairMeshRun = PairMeshStage;
 
 // GIL held: nodes, node_is_boundary, tets, types, on_sheets,
 // boundary_triangles (numpy) and report (dict).

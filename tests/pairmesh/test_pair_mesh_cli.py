@@ -24,12 +24,14 @@ PUBLIC_DIR = os.environ.get("CADMEDIAL_PUBLIC_MODELS_DIR", "../shared/models/pub
 # Public dev models above this many bytes (lever, NIST CTC-01, bottle) take
 # 15 s to minutes in the exact cell classification; bench/ covers them.
 PUBLIC_MAX_BYTES = 190_000
-# Known gap (issue #4): the repair leaves a few Edge-Edge elements whose
-# boundary edge misses its cut facet (the paper splits that edge; not done
-# yet). Measured: at most 3 per model here (0 on 9 of 19 solids), folding
-# over at most 2e-5 of the volume. A valid mesh has 0 and 0.
-MAX_INVERTED_SHARE = 1e-4
-MAX_OVERLAP = 1e-4
+# Known gap (issue #4), measured 2026-11-30: the repair leaves 0 inverted
+# elements on every bundled solid; on the public ones (face_recognition,
+# plates, lever, NIST parts) a few may stay (lever 36 of 565k). Bundled
+# models are held to a valid mesh: 0 inverted, no overlap, and an iso-surface
+# at t = 0.5 that does not cut itself (exact arithmetic; the rounded points
+# of the written file may show crossings of sliver cuts, printed).
+MAX_INVERTED_SHARE_PUBLIC = 1e-5
+MAX_OVERLAP_PUBLIC = 2e-5
 
 
 def public_dev_models():
@@ -78,7 +80,7 @@ class PairMeshCli(unittest.TestCase):
     def tearDown(self):
         shutil.rmtree(self.tmp, ignore_errors=True)
 
-    def check_model(self, model):
+    def check_model(self, model, strict):
         out = os.path.join(self.tmp, os.path.basename(model))
         run = subprocess.run([CADMEDIAL, "run", model, "-o", out, "--pair-mesh", "--iso", "0.5", "--iso", "1",
                               "--no-oracle"], capture_output=True, text=True, timeout=600)
@@ -97,9 +99,9 @@ class PairMeshCli(unittest.TestCase):
             sys.stdout.flush()
             with self.subTest(solid=name):
                 self.assertGreater(pm["tetrahedra"], 0)
-                self.assertLessEqual(pm["inverted"], MAX_INVERTED_SHARE * pm["tetrahedra"])
+                self.assertLessEqual(pm["inverted"], 0 if strict else MAX_INVERTED_SHARE_PUBLIC * pm["tetrahedra"])
                 self.assertLessEqual(pm["gap_error"], 1e-9)
-                self.assertLessEqual(pm["overlap_error"], MAX_OVERLAP)
+                self.assertLessEqual(pm["overlap_error"], 1e-12 if strict else MAX_OVERLAP_PUBLIC)
                 self.assertEqual(pm["boundary_triangles_not_in_one_vertex_face"], 0)
                 self.assertEqual(pm["boundary_edges_not_shared"], 0)
                 self.assertLessEqual(pm["volume_error"], 0.01)
@@ -108,6 +110,15 @@ class PairMeshCli(unittest.TestCase):
                 ej = load_json(os.path.join(solid, "eval.json"))["pair_mesh"]
                 for key in ("tetrahedra", "inverted", "boundary_triangles", "exact_volume"):
                     self.assertEqual(ej[key], pm[key], key)
+                # CGAL's self-intersection test on the t = 0.5 iso-surface (eval).
+                # Known gap: flat elements along convex edges leave a few crossings.
+                print("    iso 0.5: %d crossing pairs (%d on the rounded points), %d flat triangles; "
+                      "split edges %d, welded nodes %d" % (
+                          ej["iso_0.5_self_intersections"], ej["iso_0.5_rounded_crossings"],
+                          ej["iso_0.5_degenerate_triangles"], pm["split_boundary_edges"],
+                          pm["welded_voronoi_nodes"]))
+                if strict or pm["inverted"] == 0:
+                    self.assertEqual(ej["iso_0.5_self_intersections"], 0)
                 self.assertAlmostEqual(ej["enclosed_volume"], pm["enclosed_volume"],
                                        delta=1e-12 * pm["exact_volume"])
                 # ParaView's reader: every cell a tetrahedron with its type and sheet flag.
@@ -131,14 +142,14 @@ class PairMeshCli(unittest.TestCase):
         models = sorted(glob.glob(os.path.join(MODELS_DIR, "*.step")))
         self.assertGreaterEqual(len(models), 8)
         for model in models:
-            self.check_model(model)
+            self.check_model(model, strict=True)
 
     def test_public_dev_models(self):
         models = public_dev_models()
         if not models:
             self.skipTest("no ../shared/models/public")
         for model in models:
-            self.check_model(model)
+            self.check_model(model, strict=False)
 
     def test_point_cloud_pair_mesh_is_refused_with_a_warning(self):
         cloud = os.path.join(self.tmp, "cloud.xyz")

@@ -40,7 +40,7 @@ const char* pairElementTypeName(PairElementType t);
 
 struct PairMeshCounts {
   std::size_t innerCells = 0;
-  std::size_t weldedNodes = 0;  // Voronoi nodes moved (< 1e-7 of the extent) onto a nearly coincident one
+  std::size_t weldedNodes = 0;  // Voronoi nodes put on a nearly coincident one (< 1e-8 extent, or < h/200 when safe)
   std::size_t boundaryTriangles = 0;
   std::size_t faceVertex = 0, edgeEdge = 0, vertexFace = 0;  // tetrahedra of each type
   // Repair (seed 003 §4.1): Voronoi nodes moved toward the inside of their
@@ -61,6 +61,7 @@ struct PairMesh {
   std::size_t sampleNodes = 0;
   std::vector<Index> nodeCell;        // per node: its Delaunay cell, kNoIndex for boundary nodes
   std::vector<std::uint8_t> boundaryNode;  // per node: 1 sample or split point, 0 Voronoi node
+  double spacing = 0;  // the samples' spacing h (0 if unknown)
   std::vector<std::array<Index, 4>> tets;
   std::vector<PairElementType> type;
   // Dual data per tetrahedron (kNoIndex where unused):
@@ -150,6 +151,11 @@ PairMeshValidity checkPairMesh(const PairMesh& mesh);
 struct IsoSurface {
   std::vector<Vec3> points;
   std::vector<std::array<Index, 3>> triangles;
+  std::vector<Index> element;  // per triangle: the pair-mesh element it cuts
+  // Per point: its interim edge {boundary node, Voronoi node} (kNoIndex for
+  // the side merged away at t = 1 or t = 0), and the parameter.
+  std::vector<std::array<Index, 2>> pointNodes;
+  double t = 0.5;
 };
 IsoSurface isoSurface(const PairMesh& mesh, double t);
 
@@ -162,7 +168,15 @@ IsoSurface isoSurface(const PairMesh& mesh, double t);
 struct IsoSurfaceIntersections {
   std::size_t intersectingPairs = 0;
   std::size_t degenerateTriangles = 0;
+  std::vector<std::array<Index, 2>> elementPairs;  // the elements of (up to 100) crossing pairs
+  std::size_t roundedCrossings = 0;  // crossing pairs of the triangles at their rounded (written) points
 };
 IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso);
+// The same, decided on the exact iso-surface of `mesh` (its points built
+// with exact arithmetic from the nodes, CGAL's Epeck kernel) when the
+// rounded points show crossings: what the pair-mesh defines, free of the
+// rounding of the written coordinates, which near sliver elements alone can
+// make cuts cross (those are counted in roundedCrossings).
+IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso, const PairMesh& mesh);
 
 }  // namespace cadmedial
