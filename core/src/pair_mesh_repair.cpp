@@ -340,9 +340,9 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance) {
 
 }  // namespace
 
-std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, int rounds) {
+std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, int rounds, bool weldCloseNodes) {
   m.counts.invertedBeforeRepair = countNegative(m);
-  m.counts.weldedNodes += weldCloseVoronoiNodes(m, m.spacing / 200);
+  if (weldCloseNodes) m.counts.weldedNodes += weldCloseVoronoiNodes(m, m.spacing / 200);
   std::vector<std::uint8_t> moved;
   if (moveVoronoiNodes(m, dv, rounds, moved) > 0) {
     m.counts.splitEdges = splitBoundaryEdges(m);

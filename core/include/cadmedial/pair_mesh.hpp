@@ -99,7 +99,10 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
 // Then every boundary edge with a negative Edge-Edge element that node moves
 // could not fix is split (splitBoundaryEdges) and the nodes are moved again.
 // Updates the counts; returns the number of negative elements left.
-std::size_t repairFlippedElements(PairMesh& mesh, const DelaunayVoronoi& dv, int rounds = 12);
+// weldCloseNodes: first put clusters of Voronoi nodes closer than h/200 on
+// one position where that leaves no more elements to repair around them.
+std::size_t repairFlippedElements(PairMesh& mesh, const DelaunayVoronoi& dv, int rounds = 12,
+                                  bool weldCloseNodes = true);
 
 // Seed 003 §4.1, second case: a boundary edge ab that misses its Voronoi cut
 // face (the chain of inner Voronoi nodes around it) folds some of its
