@@ -287,6 +287,17 @@ def build_pair_mesh(tmp):
     axis.Spacing = 2.5
     doc.recompute()
     check(healthy(pm) and abs(pm.SpacingUsed.Value - 2.5) < 1e-9, "reopened: axis Spacing still drives the child")
+    # Another source object on the axis: the child's Source link follows (set in its execute).
+    other = doc.addObject("Part::Box", "Other")
+    other.Length, other.Width, other.Height = 20, 10, 6
+    axis.Source = other
+    doc.recompute()
+    check(healthy(pm) and healthy(axis) and pm.Source == other and abs(pm.ExactVolume - 1200) < 1e-6
+          and abs(pm.EnclosedVolume - 1200) <= 12 and pm.Inverted == 0,
+          f"axis Source -> a 20 x 10 x 6 box: child follows (enclosed {pm.EnclosedVolume:.6f})")
+    axis.Source = box
+    doc.recompute()
+    check(healthy(pm) and pm.Source == box and abs(pm.ExactVolume - 30000) < 1e-6, "and back")
 
     # --- False: the child is removed (derived data, recomputable) ...
     name = pm.Name
