@@ -24,6 +24,11 @@ sheets (the result is reused when only display properties change). The
 number of sheet objects is adjusted after each document recompute by a
 document observer (sync_sheets), never during a recompute.
 
+BuildPairMesh = True gives a MedialAxis a PairMesh child (pair_document)
+that follows its source and parameters; False removes it again (or, if
+another object uses it, leaves it as a standalone PairMesh). See
+MedialAxisFeature.onChanged for when the child is created.
+
 The proxies keep nothing but their type in the document, so a saved document
 reopens wherever ``import cadmedial`` works (FreeCAD with the addon, or
 python3 after plugin/install.sh).
@@ -263,6 +268,9 @@ class MedialAxisFeature:
           "Ratio condition of CAD_MEDIAL: |pq| must exceed Rho x the umbrella circumradius", 8.0)
         p(obj, "App::PropertyBool", "CheckInside", "Medial Axis",
           "Check every inner/outer decision with OCCT's exact classifier (slower; see OracleDisagreements)", True)
+        p(obj, "App::PropertyBool", "BuildPairMesh", "Medial Axis",
+          "Also build the pair-mesh of this solid (a PairMesh child that follows Source, Spacing, Theta, Rho); "
+          "False removes it (kept as a standalone PairMesh if another object uses it)", False)
         if "ColorBy" not in obj.PropertiesList:
             obj.addProperty("App::PropertyEnumeration", "ColorBy", "Display", "Colour by medial radius or by sheet")
             obj.ColorBy = COLOR_MODES
@@ -303,10 +311,32 @@ class MedialAxisFeature:
         ensure_view_provider(obj)
 
     def onChanged(self, obj, prop):
+        if prop == "BuildPairMesh":
+            self.pair_mesh_changed(obj)
         if prop == "ColorBy" and "ResultData" in obj.PropertiesList and "Restore" not in obj.State and obj.ResultData:
             result = get_result(obj)
             if result is not None:
                 self.apply_colors(obj, result)
+
+    @staticmethod
+    def pair_mesh_changed(obj):
+        """Creates / releases the pair-mesh child right away, in the same undo
+        step as the property change, when that is safe: not while the document
+        is being restored (the saved child comes back by itself), not during
+        undo / redo (the transaction restores child and property together) and
+        not during a recompute (FreeCAD 0.20 loses objects added or removed
+        then; an expression-bound BuildPairMesh changes there): that case is
+        left to the document observer, which runs after the recompute. Done in
+        onChanged rather than on a timer, so freecadcmd (no event loop) and the
+        GUI behave the same and the next recompute (the GUI's auto-recompute
+        after a property edit, or doc.recompute()) computes the new child."""
+        doc = getattr(obj, "Document", None)
+        if doc is None or "Restore" in obj.State or doc.Transacting:
+            return
+        if doc.Recomputing:
+            _pending_pair_mesh.add((doc.Name, obj.Name))
+            return
+        _sync_pair_mesh_reporting(obj)
 
     def execute(self, obj):
         import time
@@ -527,8 +557,32 @@ def sync_sheets(medial):
     return kids
 
 
+#: (document, MedialAxis) names whose BuildPairMesh changed during a recompute.
+_pending_pair_mesh = set()
+
+
+def _sync_pair_mesh_reporting(medial):
+    """pair_document.sync_pair_mesh; an error (a points source) goes to the
+    Report view and BuildPairMesh back to False, never out of onChanged."""
+    from . import pair_document
+
+    try:
+        pair_document.sync_pair_mesh(medial)
+    except Exception as e:  # noqa: BLE001
+        App.Console.PrintError(f"{medial.Label}: no pair-mesh: {e}\n")
+        if medial.BuildPairMesh:
+            medial.BuildPairMesh = False
+
+
+def pair_mesh_children(medial):
+    from . import pair_document
+
+    return pair_document.pair_mesh_children(medial)
+
+
 class _SheetObserver:
-    """Adjusts the number of sheet objects after each recompute."""
+    """Adjusts the number of sheet objects after each recompute, and creates /
+    releases the pair-mesh children asked for during it."""
 
     def __init__(self):
         self.busy = False
@@ -540,17 +594,19 @@ class _SheetObserver:
             stale = [o.Name for o in doc.Objects if is_medial(o) and "Invalid" not in o.State and not sheets_in_sync(o)]
         except Exception:  # noqa: BLE001 - never break a recompute
             return
-        if not stale:
+        pending = sorted(n for d, n in _pending_pair_mesh if d == doc.Name)
+        _pending_pair_mesh.difference_update((doc.Name, n) for n in pending)
+        if not stale and not pending:
             return
         if App.GuiUp:
             from PySide2 import QtCore
 
             name = doc.Name
-            QtCore.QTimer.singleShot(0, lambda: self.sync(name, stale))
+            QtCore.QTimer.singleShot(0, lambda: self.sync(name, stale, pending))
         else:
-            self.sync(doc.Name, stale)
+            self.sync(doc.Name, stale, pending)
 
-    def sync(self, doc_name, names):
+    def sync(self, doc_name, names, pair_names=()):
         doc = App.listDocuments().get(doc_name)
         if doc is None:
             return
@@ -563,6 +619,10 @@ class _SheetObserver:
                         sync_sheets(obj)
                     except Exception as e:  # noqa: BLE001
                         App.Console.PrintError(f"{obj.Label}: could not update its sheet objects: {e}\n")
+            for name in pair_names:
+                obj = doc.getObject(name)
+                if obj is not None and is_medial(obj):
+                    _sync_pair_mesh_reporting(obj)
         finally:
             self.busy = False
 
@@ -672,7 +732,7 @@ class ViewProviderMedialAxis(_ViewProviderBase):
         if obj is None:
             return []
         try:
-            return sheet_children(obj)
+            return sheet_children(obj) + pair_mesh_children(obj)
         except Exception:  # noqa: BLE001
             return []
 
@@ -702,6 +762,7 @@ class ViewProviderMedialAxis(_ViewProviderBase):
         obj = vobj.Object
         for kid in sheet_children(obj):
             obj.Document.removeObject(kid.Name)
+        _release_pair_meshes(obj)
         return True
 
 
@@ -846,9 +907,18 @@ def evaluate(obj):
     return lines
 
 
+def _release_pair_meshes(medial):
+    from . import pair_document
+
+    for pm in pair_mesh_children(medial):
+        pair_document.release_pair_mesh(pm)
+
+
 def remove(obj):
-    """Removes a MedialAxis object and its sheet objects."""
+    """Removes a MedialAxis object, its sheet objects and its pair-mesh child
+    (kept, unlinked, if another object uses it)."""
     doc = obj.Document
     for kid in sheet_children(obj):
         doc.removeObject(kid.Name)
+    _release_pair_meshes(obj)
     doc.removeObject(obj.Name)

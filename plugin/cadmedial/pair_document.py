@@ -17,6 +17,12 @@ PairMeshIsoSurface (Mesh::FeaturePython)
 
 Changing the source shape or a parameter recomputes the pair-mesh; a
 recompute whose inputs are unchanged reuses the stored result.
+
+A PairMesh may follow a MedialAxis (its `MedialAxis` link, set by the
+MedialAxis' BuildPairMesh property): then Source, SolidIndex, Spacing, Theta
+and Rho are read-only copies of the MedialAxis' values, refreshed at every
+recompute, and the link makes FreeCAD recompute the pair-mesh after its
+MedialAxis. sync_pair_mesh() creates / releases that child.
 """
 
 import tempfile
@@ -157,6 +163,9 @@ class PairMeshFeature:
           "Target sample spacing in model units; 0 = automatic (bounding-box diagonal / 40)", 0.0)
         p(obj, "App::PropertyAngle", "Theta", "Pair Mesh", "Angle condition of CAD_MEDIAL (for OnSheets)", 5.0)
         p(obj, "App::PropertyFloat", "Rho", "Pair Mesh", "Ratio condition of CAD_MEDIAL (for OnSheets)", 8.0)
+        p(obj, "App::PropertyLink", "MedialAxis", "Pair Mesh",
+          "The MedialAxis whose BuildPairMesh made this object: source and parameters follow it", None, 1)
+        set_follow_modes(obj)
         if "Elements" not in obj.PropertiesList:
             obj.addProperty("App::PropertyEnumeration", "Elements", "Display",
                             "Element types the FEM mesh holds (to look at one type alone); export holds all")
@@ -211,6 +220,7 @@ class PairMeshFeature:
     def execute(self, obj):
         import time
 
+        follow_medial_axis(obj)
         solid = source_solid(obj.Source, obj.SolidIndex)
         spacing, theta, rho = float(obj.Spacing.Value), float(obj.Theta.Value), float(obj.Rho)
         brep = solid.exportBrepToString()
@@ -285,6 +295,86 @@ class PairMeshFeature:
         obj.Valid = mesh.valid
         obj.Seconds = round(float(r.get("wall_seconds", mesh.seconds.get("total", 0.0))), 3)
         obj.SpacingUsed = float(r.get("spacing", 0.0))
+
+
+FOLLOWED = ("Source", "SolidIndex", "Spacing", "Theta", "Rho")
+
+
+def set_follow_modes(obj):
+    """The copied parameters are read-only while the object follows a MedialAxis
+    (an edit would be overwritten at the next recompute)."""
+    following = getattr(obj, "MedialAxis", None) is not None
+    for name in FOLLOWED:
+        if name in obj.PropertiesList:
+            obj.setEditorMode(name, 1 if following else 0)
+
+
+def follow_medial_axis(obj):
+    """Copies Source, SolidIndex, Spacing, Theta, Rho from the linked MedialAxis
+    (if any) into a PairMesh object; only values that differ are set."""
+    medial = getattr(obj, "MedialAxis", None)
+    if medial is None:
+        return
+    if not is_medial(medial):
+        raise ValueError(f"{obj.Label}: its MedialAxis link is not a MedialAxis object")
+    if medial.Source is None or "Shape" not in medial.Source.PropertiesList:
+        raise ValueError(f"{obj.Label}: '{medial.Label}' has no B-rep source; {api.PAIR_MESH_MESSAGE}")
+    if obj.Source != medial.Source:
+        obj.Source = medial.Source
+    for name in ("SolidIndex", "Spacing", "Theta", "Rho"):
+        value = getattr(medial, name)
+        value = getattr(value, "Value", value)  # Quantity -> float
+        if getattr(getattr(obj, name), "Value", getattr(obj, name)) != value:
+            setattr(obj, name, value)
+
+
+def pair_mesh_children(medial):
+    """The PairMesh objects that follow a MedialAxis (made by its BuildPairMesh)."""
+    return [o for o in medial.InList if is_pair_mesh(o) and getattr(o, "MedialAxis", None) == medial]
+
+
+def release_pair_mesh(pm):
+    """Stops a PairMesh following its MedialAxis and removes it, unless another
+    object uses it (an iso-surface, a FEM analysis): then it stays as a
+    standalone PairMesh with the last parameters and the user is told."""
+    medial = pm.MedialAxis
+    users = [o for o in pm.InList if o != medial]
+    if users:
+        pm.MedialAxis = None
+        set_follow_modes(pm)
+        App.Console.PrintMessage(
+            f"{pm.Label}: kept as a standalone pair-mesh (used by {', '.join(o.Label for o in users)}); "
+            f"it no longer follows '{medial.Label if medial else '?'}'\n")
+        return False
+    pm.Document.removeObject(pm.Name)
+    return True
+
+
+def sync_pair_mesh(medial):
+    """Makes the pair-mesh child of a MedialAxis match its BuildPairMesh: creates
+    one (not computed: the next recompute does that) or releases it. Returns the
+    child or None. Call it outside a recompute (MedialAxisFeature.onChanged
+    does, or the document observer after the recompute)."""
+    kids = pair_mesh_children(medial)
+    if not getattr(medial, "BuildPairMesh", False):
+        for pm in kids:
+            release_pair_mesh(pm)
+        return None
+    if kids:
+        return kids[0]
+    source = medial.Source
+    if source is None or "Shape" not in source.PropertiesList:
+        raise ValueError(f"'{medial.Label}' was made from points or a mesh; {api.PAIR_MESH_MESSAGE}")
+    doc = medial.Document
+    pm = doc.addObject("Fem::FemMeshObjectPython", "PairMesh")
+    PairMeshFeature(pm)
+    if App.GuiUp:
+        ViewProviderPairMesh(pm.ViewObject)
+    pm.Label = f"{medial.Label} pair-mesh"
+    pm.MedialAxis = medial
+    follow_medial_axis(pm)
+    set_follow_modes(pm)
+    return pm
 
 
 class IsoSurfaceFeature:
@@ -374,6 +464,19 @@ class ViewProviderPairMesh:
         if obj is None:
             return []
         return [o for o in obj.InList if is_iso_surface(o)]
+
+    def onDelete(self, vobj, subelements):
+        # Deleting the child of a MedialAxis in the GUI also switches its
+        # BuildPairMesh off, or the property would claim a pair-mesh that is
+        # gone. Unlink first, so the MedialAxis' onChanged finds no child to
+        # release (the delete command removes this object itself).
+        obj = vobj.Object
+        medial = getattr(obj, "MedialAxis", None)
+        if medial is not None:
+            obj.MedialAxis = None
+            if getattr(medial, "BuildPairMesh", False):
+                medial.BuildPairMesh = False
+        return True
 
     def __getstate__(self):
         return None

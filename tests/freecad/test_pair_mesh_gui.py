@@ -193,6 +193,59 @@ def main():
     check(not any(pair_document.is_pair_mesh(o) or pair_document.is_iso_surface(o) for o in doc.Objects),
           "undo removes the pair-mesh and the iso-surface")
 
+    build_pair_mesh_gui(source_dir)
+
+
+def tree_children(label):
+    """Labels of the children of the tree item with this label (the Model tree)."""
+    for tree in Gui.getMainWindow().findChildren(QtWidgets.QTreeWidget):
+        for item in tree.findItems(label, QtCore.Qt.MatchExactly | QtCore.Qt.MatchRecursive, 0):
+            return [item.child(i).text(0) for i in range(item.childCount())]
+    return None
+
+
+def build_pair_mesh_gui(source_dir):
+    """MedialAxis.BuildPairMesh in the GUI: set as the property editor does
+    (a command string inside an active transaction), the child under the axis
+    in the tree; Std_Delete of the child switches BuildPairMesh off; undo."""
+    import Part
+
+    import cadmedial
+    from cadmedial import pair_document
+
+    print("--- BuildPairMesh in the GUI", flush=True)
+    doc = App.newDocument("BuildPairMeshGui")
+    box = doc.addObject("Part::Feature", "Box")
+    box.Shape = Part.read(os.path.join(source_dir, "models", "box.step"))
+    doc.recompute()
+    (axis,) = cadmedial.add_to_document(doc, box, check_inside=False)
+    wait_until(lambda: False, 0.3)
+    App.setActiveTransaction("Edit BuildPairMesh")
+    Gui.doCommand(f"App.getDocument('{doc.Name}').getObject('{axis.Name}').BuildPairMesh = True")
+    App.closeActiveTransaction()
+    doc.recompute()
+    wait_until(lambda: False, 0.5)
+    kids = pair_document.pair_mesh_children(axis)
+    check(len(kids) == 1 and isinstance(kids[0].ViewObject.Proxy, pair_document.ViewProviderPairMesh),
+          "GUI: BuildPairMesh = True makes a PairMesh child with its view provider")
+    pm = kids[0]
+    check(not ({"Invalid", "Error", "Touched"} & set(pm.State)) and pm.Inverted == 0
+          and abs(pm.EnclosedVolume - 24000) <= 240, f"GUI: child computed, enclosed {pm.EnclosedVolume:.3f}")
+    children = tree_children(axis.Label) or []
+    check(pm.Label in children, f"GUI: the child is under the axis in the tree ({len(children)} children)")
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(doc.Name, pm.Name)
+    name = pm.Name
+    Gui.runCommand("Std_Delete", 0)
+    wait_until(lambda: False, 0.3)
+    check(doc.getObject(name) is None and axis.BuildPairMesh is False,
+          "GUI: deleting the child switches BuildPairMesh off")
+    doc.undo()
+    wait_until(lambda: False, 0.3)
+    again = doc.getObject(name)
+    check(again is not None and again.MedialAxis == axis and axis.BuildPairMesh is True,
+          "GUI: undo of the delete brings child, link and BuildPairMesh back")
+
 
 def run():
     code = 1
