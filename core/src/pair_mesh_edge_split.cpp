@@ -78,10 +78,19 @@ struct Score {
   }
 };
 
+// Bad as in the rest of the repair: inverted, or flat with four distinct
+// corners (a split point on a Voronoi node would make such elements).
 void addToScore(Score& s, const std::vector<Vec3>& nodes, const std::array<Index, 4>& t) {
   using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
   auto point = [&](Index n) { return Point(nodes[n][0], nodes[n][1], nodes[n][2]); };
-  if (CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3])) == CGAL::NEGATIVE) {
+  const auto o = CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3]));
+  bool bad = o == CGAL::NEGATIVE;
+  if (o == CGAL::ZERO) {
+    bad = true;
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) bad = bad && nodes[t[a]] != nodes[t[b]];
+  }
+  if (bad) {
     ++s.negative;
     s.deficit -= orient(nodes[t[0]], nodes[t[1]], nodes[t[2]], nodes[t[3]]);
   }
@@ -206,10 +215,19 @@ class EdgeSplitter {
     // Up to and a little past the chain: when the chain lies between the
     // edge and the cut face, the face is just beyond it.
     static constexpr double kSteps[] = {0.05, 0.1, 0.2, 0.35, 0.5, 0.7, 0.9, 1.02, 1.1, 1.25};
+    const double dx = pa[0] - pb[0], dy = pa[1] - pb[1], dz = pa[2] - pb[2];
+    const double tooClose = 1e-6 * (dx * dx + dy * dy + dz * dz);  // (1e-3 of the edge)^2
     std::vector<Vec3> out;
     for (double s : kSteps)
-      for (const Vec3& q : targets)
-        out.push_back({mid[0] + s * (q[0] - mid[0]), mid[1] + s * (q[1] - mid[1]), mid[2] + s * (q[2] - mid[2])});
+      for (const Vec3& q : targets) {
+        const Vec3 c{mid[0] + s * (q[0] - mid[0]), mid[1] + s * (q[1] - mid[1]), mid[2] + s * (q[2] - mid[2])};
+        bool onChain = false;
+        for (Index v : chain) {
+          const double x = c[0] - m_.nodes[v][0], y = c[1] - m_.nodes[v][1], z = c[2] - m_.nodes[v][2];
+          onChain = onChain || x * x + y * y + z * z <= tooClose;
+        }
+        if (!onChain) out.push_back(c);
+      }
     return out;
   }
 

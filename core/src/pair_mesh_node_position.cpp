@@ -54,7 +54,10 @@ std::optional<Vec3> nearestValidNodePosition(const std::vector<Vec3>& nodes, Ind
       norm += g[j] * g[j];
     }
     norm = std::sqrt(norm);
-    if (!(norm > 0)) continue;  // the node does not move this element
+    if (!(norm > 0)) {  // the node does not move this element
+      if (c <= 0) return std::nullopt;  // and it is not positive: no position helps
+      continue;
+    }
     // c + g . q >= norm t   <=>   -g . q + norm t <= c   (all divided by norm)
     for (int j = 0; j < 3; ++j) lp.set_a(j, row, -g[j] / norm);
     lp.set_a(3, row, 1.0);

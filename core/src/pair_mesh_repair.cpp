@@ -143,7 +143,9 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
       const double size = std::cbrt(negligibleVolume(m, i) * 1e12);  // longest edge
       std::vector<Index> cluster;
       for (Index v : m.tets[i])
-        if (!m.isBoundaryNode(v)) cluster.push_back(v);
+        if (!m.isBoundaryNode(v) &&
+            (cluster.empty() || squaredLength(m.nodes[v], m.nodes[cluster[0]]) < 0.0025 * size * size))
+          cluster.push_back(v);
       if (cluster.empty()) continue;
       const Vec3 seed = m.nodes[cluster[0]];
       for (std::size_t q = 0; q < cluster.size() && cluster.size() < 32; ++q)
@@ -325,12 +327,19 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance) {
     for (Index v : cluster) start.push_back(m.nodes[v]);
     const std::size_t before = badAroundSet(cluster);
     bool done = false;
+    std::size_t moved = 0;
     for (std::size_t k = 0; k < cluster.size() && !done; ++k) {  // onto each member's position in turn
+      // Chains of close pairs can span far: every member must be near the target.
+      bool compact = true;
+      for (const Vec3& p : start) compact = compact && squaredLength(p, start[k]) <= 4 * limit;
+      if (!compact) continue;
       for (Index v : cluster) m.nodes[v] = start[k];
       done = badAroundSet(cluster) <= before;
+      moved = 0;
+      for (const Vec3& p : start) moved += p != start[k] ? 1 : 0;
     }
     if (done) {
-      welded += cluster.size() - 1;
+      welded += moved;
     } else {
       for (std::size_t k = 0; k < cluster.size(); ++k) m.nodes[cluster[k]] = start[k];
     }

@@ -20,12 +20,9 @@ namespace cadmedial {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// The one place that says which nodes lie on the boundary. The lead is adding
-// PairMesh::isBoundaryNode (boundary-edge splitting appends boundary nodes
-// after the Voronoi nodes); switch to it here when it lands.
+// Which nodes lie on the boundary: the samples and the split points that
+// boundary-edge splitting appends after the Voronoi nodes.
 bool boundaryNode(const PairMesh& m, Index n) { return m.isBoundaryNode(n); }
 
 template <class T, std::size_t N, class Out>
