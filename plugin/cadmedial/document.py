@@ -248,7 +248,30 @@ def _colors_fit(mesh, colors_list):
 # MedialAxis
 
 
-class MedialAxisFeature:
+class FeatureProxy:
+    """What every cadmedial feature proxy saves and does on restore: only its
+    type is stored (the data lives in the object's properties), and a restored
+    object gets any property added since and its view provider back."""
+
+    def __getstate__(self):
+        return {"Type": self.Type}
+
+    def __setstate__(self, state):
+        return None
+
+    # Newer FreeCAD versions call these instead.
+    def dumps(self):
+        return self.__getstate__()
+
+    def loads(self, state):
+        return None
+
+    def onDocumentRestored(self, obj):
+        self.setup(obj)
+        ensure_view_provider(obj)
+
+
+class MedialAxisFeature(FeatureProxy):
     Type = MEDIAL_TYPE
 
     def __init__(self, obj):
@@ -292,23 +315,6 @@ class MedialAxisFeature:
         p(obj, "App::PropertyColorList", "Colors", "Display", "Per-vertex or per-face colours", None, 2)
         p(obj, "App::PropertyFileIncluded", "ResultData", "Result", "The full result (.npz)", None, 2)
         p(obj, "App::PropertyString", "InputSignature", "Result", "Inputs of the stored result", None, 2)
-
-    def __getstate__(self):
-        return {"Type": self.Type}
-
-    def __setstate__(self, state):
-        return None
-
-    # Newer FreeCAD versions call these instead.
-    def dumps(self):
-        return self.__getstate__()
-
-    def loads(self, state):
-        return None
-
-    def onDocumentRestored(self, obj):
-        self.setup(obj)
-        ensure_view_provider(obj)
 
     def onChanged(self, obj, prop):
         if prop == "BuildPairMesh":
@@ -430,7 +436,7 @@ class MedialAxisFeature:
 # MedialSheet
 
 
-class MedialSheetFeature:
+class MedialSheetFeature(FeatureProxy):
     Type = SHEET_TYPE
 
     def __init__(self, obj):
@@ -448,22 +454,6 @@ class MedialSheetFeature:
         p(obj, "App::PropertyFloat", "MinRadius", "Sheet", "Smallest medial radius on this sheet", 0.0, 1)
         p(obj, "App::PropertyFloat", "MaxRadius", "Sheet", "Largest medial radius on this sheet", 0.0, 1)
         p(obj, "App::PropertyColorList", "Colors", "Display", "Per-vertex or per-face colours", None, 2)
-
-    def __getstate__(self):
-        return {"Type": self.Type}
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return self.__getstate__()
-
-    def loads(self, state):
-        return None
-
-    def onDocumentRestored(self, obj):
-        self.setup(obj)
-        ensure_view_provider(obj)
 
     def execute(self, obj):
         parent = obj.MedialAxis

@@ -33,6 +33,7 @@ import numpy as np
 
 from . import api
 from .document import (
+    FeatureProxy,
     _ViewProviderBase,
     _add_property,
     _mesh,
@@ -148,7 +149,7 @@ def prebuild_fem_mesh(mesh):
     return mesh.prebuilt_fem
 
 
-class PairMeshFeature:
+class PairMeshFeature(FeatureProxy):
     Type = PAIR_MESH_TYPE
 
     def __init__(self, obj):
@@ -193,22 +194,6 @@ class PairMeshFeature:
         p(obj, "App::PropertyLength", "SpacingUsed", stats, "Sample spacing used", 0.0, 1)
         p(obj, "App::PropertyFileIncluded", "ResultData", "Result", "The pair-mesh arrays (.npz)", None, 2)
         p(obj, "App::PropertyString", "InputSignature", "Result", "Inputs of the stored result", None, 2)
-
-    def __getstate__(self):
-        return {"Type": self.Type}
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return self.__getstate__()
-
-    def loads(self, state):
-        return None
-
-    def onDocumentRestored(self, obj):
-        self.setup(obj)
-        ensure_view_provider(obj)
 
     def onChanged(self, obj, prop):
         # Only the FemMesh changes: no new computation.
@@ -377,7 +362,7 @@ def sync_pair_mesh(medial):
     return pm
 
 
-class IsoSurfaceFeature:
+class IsoSurfaceFeature(FeatureProxy):
     Type = ISO_TYPE
 
     def __init__(self, obj):
@@ -392,22 +377,6 @@ class IsoSurfaceFeature:
                             "Parameter of the surface: 0 the medial side, 1 the boundary surface")
             obj.T = (0.5, 0.0, 1.0, 0.05)
         p(obj, "App::PropertyInteger", "Triangles", "Statistics", "Triangles of the surface", 0, 1)
-
-    def __getstate__(self):
-        return {"Type": self.Type}
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return self.__getstate__()
-
-    def loads(self, state):
-        return None
-
-    def onDocumentRestored(self, obj):
-        self.setup(obj)
-        ensure_view_provider(obj)
 
     def execute(self, obj):
         mesh = get_pair_mesh(obj.PairMesh)

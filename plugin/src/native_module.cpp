@@ -10,6 +10,7 @@
 #include "cadmedial/compute_medial.hpp"
 #include "cadmedial/medial.hpp"
 #include "pair_mesh_bindings.hpp"
+#include "without_gil.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -141,21 +142,15 @@ class Progress {
   std::exception_ptr pending_;
 };
 
-// Runs `work` without the GIL and turns OCCT failures into std exceptions.
+// Runs `work` without the GIL; a callback's pending error (progress,
+// cancel) goes first, then the work's own.
 template <class Work>
 void runWithoutGil(Progress& progress, Work&& work) {
   std::exception_ptr error;
-  {
-    py::gil_scoped_release release;
-    try {
-      try {
-        work();
-      } catch (const Standard_Failure& f) {
-        throw std::runtime_error(std::string("OpenCASCADE failure: ") + f.GetMessageString());
-      }
-    } catch (...) {
-      error = std::current_exception();
-    }
+  try {
+    withoutGil(std::forward<Work>(work));
+  } catch (...) {
+    error = std::current_exception();
   }
   progress.rethrowPending();
   if (error) std::rethrow_exception(error);

@@ -13,6 +13,7 @@
 
 #include "pair_mesh_io.hpp"
 #include "pair_mesh_stage.hpp"
+#include "without_gil.hpp"
 
 namespace py = pybind11;
 
@@ -106,25 +107,6 @@ PairMesh pairMeshFromArrays(const DoubleArray& nodes, const IntArray& tets, cons
   }
   m.nodeCell.assign(nn, kNoIndex);
   return m;
-}
-
-// OCCT failures and the rest become Python exceptions after the GIL is back.
-template <class Work>
-void withoutGil(Work&& work) {
-  std::exception_ptr error;
-  {
-    py::gil_scoped_release release;
-    try {
-      try {
-        work();
-      } catch (const Standard_Failure& f) {
-        throw std::runtime_error(std::string("OpenCASCADE failure: ") + f.GetMessageString());
-      }
-    } catch (...) {
-      error = std::current_exception();
-    }
-  }
-  if (error) std::rethrow_exception(error);
 }
 
 py::dict isoSurfaceOf(const DoubleArray& nodes, const IntArray& tets, const ByteArray& types, double t) {
