@@ -70,6 +70,8 @@ PairMeshStage buildPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& sam
   report["moved_voronoi_nodes"] = mesh.counts.movedNodes;
   report["welded_voronoi_nodes"] = mesh.counts.weldedNodes;
   report["split_boundary_edges"] = mesh.counts.splitEdges;
+  report["retriangulated_voronoi_polygons"] = mesh.counts.retriangulatedPolygons;
+  report["relabelled_flat_cells"] = mesh.counts.relabelledFlatCells;
   report["inverted_after_repair"] = mesh.counts.invertedAfterRepair;
   report["seconds"] = {{"classify_cells", classifySeconds},
                        {"build", mesh.seconds},

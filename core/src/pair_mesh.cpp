@@ -1,4 +1,5 @@
 #include "cadmedial/pair_mesh.hpp"
+#include "pair_mesh_flat_cells.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -253,7 +254,11 @@ const char* pairElementTypeName(PairElementType t) {
 PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, const std::vector<std::uint8_t>& cellInner,
                        const MedialComplex* innerAxis, bool repair) {
   Stopwatch watch;
-  PairMesh mesh = Builder(dv, samples, cellInner, innerAxis).build();
+  if (cellInner.size() != dv.cellCount()) throw std::invalid_argument("pair-mesh: one inner label per cell needed");
+  std::vector<std::uint8_t> inner = cellInner;
+  const std::size_t relabelled = settleFlatCells(dv, inner);
+  PairMesh mesh = Builder(dv, samples, inner, innerAxis).build();
+  mesh.counts.relabelledFlatCells = relabelled;
   mesh.seconds = watch.seconds();
   watch.restart();
   if (repair) {

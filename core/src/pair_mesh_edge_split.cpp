@@ -10,7 +10,6 @@
 // elements on the same Voronoi node. Faces stay shared pairwise, so the
 // signed volumes still add up to the volume inside the (slightly bent)
 // boundary.
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +18,7 @@
 
 #include "cadmedial/edge_table.hpp"
 #include "cadmedial/pair_mesh.hpp"
+#include "pair_mesh_element_checks.hpp"
 
 namespace cadmedial {
 
@@ -61,13 +61,6 @@ const std::vector<Triangulation>& triangulationsOf(int n) {
   return table[n];
 }
 
-double orient(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-  const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  const double w[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
-  return (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])) /
-         6.0;
-}
 
 // Negative elements and how negative, for comparing candidate repairs.
 struct Score {
@@ -81,18 +74,9 @@ struct Score {
 // Bad as in the rest of the repair: inverted, or flat with four distinct
 // corners (a split point on a Voronoi node would make such elements).
 void addToScore(Score& s, const std::vector<Vec3>& nodes, const std::array<Index, 4>& t) {
-  using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
-  auto point = [&](Index n) { return Point(nodes[n][0], nodes[n][1], nodes[n][2]); };
-  const auto o = CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3]));
-  bool bad = o == CGAL::NEGATIVE;
-  if (o == CGAL::ZERO) {
-    bad = true;
-    for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b) bad = bad && nodes[t[a]] != nodes[t[b]];
-  }
-  if (bad) {
+  if (elementNeedsRepair(nodes, t)) {
     ++s.negative;
-    s.deficit -= orient(nodes[t[0]], nodes[t[1]], nodes[t[2]], nodes[t[3]]);
+    s.deficit -= signedTetVolume(nodes[t[0]], nodes[t[1]], nodes[t[2]], nodes[t[3]]);
   }
 }
 

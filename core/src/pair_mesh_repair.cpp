@@ -10,19 +10,14 @@
 #include <cmath>
 
 #include "cadmedial/pair_mesh.hpp"
+#include "pair_mesh_element_checks.hpp"
+#include "pair_mesh_facet_triangulation.hpp"
 #include "pair_mesh_node_position.hpp"
 
 namespace cadmedial {
 
 namespace {
 
-double orient(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-  const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  const double w[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
-  return (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])) /
-         6.0;
-}
 
 double squaredLength(const Vec3& a, const Vec3& b) {
   const double x = a[0] - b[0], y = a[1] - b[1], z = a[2] - b[2];
@@ -33,7 +28,7 @@ double squaredLength(const Vec3& a, const Vec3& b) {
 
 double tetVolume(const PairMesh& m, std::size_t i) {
   const auto& t = m.tets[i];
-  return orient(m.nodes[t[0]], m.nodes[t[1]], m.nodes[t[2]], m.nodes[t[3]]);
+  return signedTetVolume(m.nodes[t[0]], m.nodes[t[1]], m.nodes[t[2]], m.nodes[t[3]]);
 }
 
 bool isInverted(const PairMesh& m, std::size_t i) {
@@ -45,21 +40,7 @@ bool isInverted(const PairMesh& m, std::size_t i) {
 
 namespace {
 
-// What the repair removes: inverted elements, and flat ones whose four
-// corners are distinct points (their iso-surface cut is a flat fin lying on
-// the neighbours' faces, which crosses their cuts). Flat elements from
-// coincident Voronoi nodes cut to nothing and are fine.
-bool needsRepair(const PairMesh& m, std::size_t i) {
-  using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
-  const auto& t = m.tets[i];
-  auto point = [&](Index n) { return Point(m.nodes[n][0], m.nodes[n][1], m.nodes[n][2]); };
-  const auto o = CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3]));
-  if (o != CGAL::ZERO) return o == CGAL::NEGATIVE;
-  for (int a = 0; a < 4; ++a)
-    for (int b = a + 1; b < 4; ++b)
-      if (m.nodes[t[a]] == m.nodes[t[b]]) return false;
-  return true;
-}
+bool needsRepair(const PairMesh& m, std::size_t i) { return elementNeedsRepair(m.nodes, m.tets[i]); }
 
 }  // namespace
 
@@ -91,17 +72,19 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
   const std::size_t n = m.nodes.size();
   moved.resize(n, 0);
   auto negative = [&m](std::size_t i) { return needsRepair(m, i); };
-  // Node -> incident tetrahedra (CSR).
-  std::vector<Index> offsets(n + 1, 0), incident;
-  for (const auto& t : m.tets)
-    for (Index v : t) ++offsets[v + 1];
-  for (std::size_t v = 0; v < n; ++v) offsets[v + 1] += offsets[v];
-  incident.resize(offsets[n]);
-  {
+  // Node -> incident tetrahedra (CSR); rebuilt when polygons are re-triangulated.
+  std::vector<Index> offsets, incident;
+  auto buildIncidence = [&]() {
+    offsets.assign(n + 1, 0);
+    for (const auto& t : m.tets)
+      for (Index v : t) ++offsets[v + 1];
+    for (std::size_t v = 0; v < n; ++v) offsets[v + 1] += offsets[v];
+    incident.resize(offsets[n]);
     std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
     for (std::size_t i = 0; i < m.tets.size(); ++i)
       for (Index v : m.tets[i]) incident[fill[v]++] = static_cast<Index>(i);
-  }
+  };
+  buildIncidence();
   auto negativeAround = [&](Index v, double* deficit) {
     std::size_t count = 0;
     for (Index k = offsets[v]; k < offsets[v + 1]; ++k) {
@@ -184,6 +167,7 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
     }
   };
 
+  static constexpr double kSteps[] = {0.03125, 0.0625, 0.125, 0.25, 0.5, 0.75, 1.0};
   auto bestPosition = [&](Index v) {
     std::vector<std::array<Index, 4>> elements;
     double far = 0;
@@ -195,8 +179,14 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
   };
 
   std::size_t bad = countNeedingRepair(m);
-  static constexpr double kSteps[] = {0.03125, 0.0625, 0.125, 0.25, 0.5, 0.75, 1.0};
   for (int round = 0; round < rounds && bad > 0; ++round) {
+    // Moves fold Voronoi polygons that another triangulation keeps positive.
+    if (const std::size_t changed = retriangulateFaceVertexPolygons(m)) {
+      m.counts.retriangulatedPolygons += changed;
+      buildIncidence();
+      bad = countNeedingRepair(m);
+      if (bad == 0) break;
+    }
     std::vector<Index> candidates;
     for (std::size_t i = 0; i < m.tets.size(); ++i)
       if (negative(i))
@@ -256,6 +246,12 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
     // clusters trades elements and is the rougher tool.
     if (2 * round >= rounds) collapseNodeClusters();
     bad = countNeedingRepair(m);
+  }
+  if (bad > 0) {
+    if (const std::size_t changed = retriangulateFaceVertexPolygons(m)) {
+      m.counts.retriangulatedPolygons += changed;
+      bad = countNeedingRepair(m);
+    }
   }
   return bad;
 }

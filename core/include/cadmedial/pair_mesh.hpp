@@ -50,6 +50,12 @@ struct PairMeshCounts {
   // Boundary edges split at a point of their Voronoi cut face (seed 003
   // §4.1, second case): each adds one boundary node.
   std::size_t splitEdges = 0;
+  // Voronoi polygons of Face-Vertex pyramids given another triangulation
+  // than the fan, where node moves had folded it.
+  std::size_t retriangulatedPolygons = 0;
+  // Flat Delaunay cells (coplanar samples, no meaningful circumcenter) given
+  // their neighbours' side where that removes a fold of the boundary.
+  std::size_t relabelledFlatCells = 0;
   std::size_t invertedAfterRepair = 0;
 };
 

@@ -1,0 +1,26 @@
+#include "pair_mesh_element_checks.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+namespace cadmedial {
+
+bool elementNeedsRepair(const std::vector<Vec3>& nodes, const std::array<Index, 4>& t) {
+  using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  auto point = [&](Index n) { return Point(nodes[n][0], nodes[n][1], nodes[n][2]); };
+  const auto o = CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3]));
+  if (o != CGAL::ZERO) return o == CGAL::NEGATIVE;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b)
+      if (nodes[t[a]] == nodes[t[b]]) return false;
+  return true;
+}
+
+double signedTetVolume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const double w[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+  return (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])) /
+         6.0;
+}
+
+}  // namespace cadmedial

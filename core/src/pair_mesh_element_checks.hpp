@@ -1,0 +1,20 @@
+// Private to the pair-mesh repair: what counts as an element to repair.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "cadmedial/sample_set.hpp"
+
+namespace cadmedial {
+
+// Inverted (negative orientation, CGAL's exact predicate), or flat with four
+// distinct corners: the iso-surface cut of such an element is a flat fin
+// lying on its neighbours' cuts, which crosses them. Flat elements with two
+// coincident corners (welded Voronoi nodes) cut to nothing and are fine.
+bool elementNeedsRepair(const std::vector<Vec3>& nodes, const std::array<Index, 4>& tet);
+
+// Signed volume of the tetrahedron (positive = valid orientation), in doubles.
+double signedTetVolume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
+}  // namespace cadmedial
