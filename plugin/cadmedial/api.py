@@ -273,7 +273,8 @@ class PairMesh:
                      "boundary_triangles_not_in_one_vertex_face", "boundary_edges_not_shared",
                      "enclosed_volume", "exact_volume", "volume_error",
                      "inverted_before_repair", "moved_voronoi_nodes", "welded_voronoi_nodes",
-                     "split_boundary_edges", "inverted_after_repair")
+                     "split_boundary_edges", "retriangulated_voronoi_polygons", "relabelled_flat_cells",
+                     "inverted_after_repair")
 
     def __init__(self, data):
         self.nodes = np.asarray(data["nodes"], dtype=np.float64).reshape(-1, 3)
