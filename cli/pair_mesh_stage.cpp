@@ -76,6 +76,9 @@ PairMeshStage buildPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& sam
   report["split_boundary_edges"] = mesh.counts.splitEdges;
   report["inverted_after_repair"] = mesh.counts.invertedAfterRepair;
   report["seconds"] = {{"classify_cells", classifySeconds},
+                       {"classify_cells_near_test", cells.nearSeconds},
+                       {"classify_cells_links", cells.linkSeconds},
+                       {"classify_cells_rays", cells.raySeconds},
                        {"build", mesh.seconds},
                        {"repair", mesh.repairSeconds},
                        {"check", checkSeconds},

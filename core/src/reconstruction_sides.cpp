@@ -13,6 +13,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "cadmedial/timer.hpp"
 #include "cadmedial/union_find.hpp"
 
 namespace cadmedial {
@@ -32,6 +33,7 @@ ReconstructionSides reconstructionSides(const DelaunayVoronoi& dv, const SampleS
                                         const std::vector<std::uint8_t>* wanted) {
   const std::size_t m = dv.cellCount();
   ReconstructionSides out;
+  Stopwatch watch;
   out.side.assign(m, kReconstructionSkipped);
   if (samples.triangles.empty() || deviation.size() != samples.triangles.size()) return out;
 
@@ -94,6 +96,8 @@ ReconstructionSides reconstructionSides(const DelaunayVoronoi& dv, const SampleS
     nearCount += nearHere;
   });
   out.nearCells = nearCount;
+  out.nearSeconds = watch.seconds();
+  watch.restart();
 
   // Links: two adjacent cells whose centres are joined by a segment touching
   // no triangle (exact predicate) are on the same side of the closed mesh.
@@ -122,7 +126,10 @@ ReconstructionSides reconstructionSides(const DelaunayVoronoi& dv, const SampleS
   UnionFind groups(m);
   for (std::size_t id = 0; id < m; ++id)
     for (int i = 0; i < 4; ++i)
-      if (linked[4 * id + i]) groups.unite(static_cast<Index>(id), DelaunayVoronoi::cellId(dv.cell(static_cast<Index>(id))->neighbor(i)));
+      if (linked[4 * id + i])
+        groups.unite(static_cast<Index>(id), DelaunayVoronoi::cellId(dv.cell(static_cast<Index>(id))->neighbor(i)));
+  out.linkSeconds = watch.seconds();
+  watch.restart();
 
   // Side per group: outside when it holds a centre outside the box, else one
   // ray parity test from any member that is needed.
@@ -160,6 +167,7 @@ ReconstructionSides reconstructionSides(const DelaunayVoronoi& dv, const SampleS
       ++out.groups;
     }
   }
+  out.raySeconds = watch.seconds();
   return out;
 }
 

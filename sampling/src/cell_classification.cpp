@@ -48,6 +48,9 @@ CellClassification classifyCellsBySolid(const DelaunayVoronoi& dv, const TopoDS_
     ReconstructionSides sides = reconstructionSides(dv, *samples, deviation, &wanted);
     out.rayCasts = sides.rayCasts;
     out.segmentTests = sides.segmentTests;
+    out.nearSeconds = sides.nearSeconds;
+    out.linkSeconds = sides.linkSeconds;
+    out.raySeconds = sides.raySeconds;
     meshSide = std::move(sides.side);
   }
 

@@ -39,6 +39,8 @@ struct ReconstructionSides {
   std::size_t segmentTests = 0;  // circumcenter-to-circumcenter segments tested against the mesh
   std::size_t rayCasts = 0;      // one per group without a centre outside the mesh's box
   std::size_t groups = 0;
+  // Seconds: tree and near test, segment links, ray casts and answers.
+  double nearSeconds = 0, linkSeconds = 0, raySeconds = 0;
 };
 
 // samples.triangles must form a closed manifold (checkSurfaceMesh); the
