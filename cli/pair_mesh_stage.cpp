@@ -53,8 +53,10 @@ PairMeshStage buildPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& sam
                                  const MedialComplex& axis) {
   PairMeshStage stage;
   auto t = Clock::now();
-  // Centres farther than h/2 from the closed reconstruction take its side;
-  // the rest go to OCCT's classifier.
+  // Centres farther from every reconstruction triangle than its measured
+  // deviation from the exact surface take the reconstruction's side; the
+  // rest go to OCCT's classifier (h/2 is the band only for sample sets
+  // without triangleDeviation).
   const CellClassification cells = classifyCellsBySolid(dv, solid, &samples, 0.5 * samples.spacing);
   const double classifySeconds = secondsSince(t);
   stage.mesh = buildPairMesh(dv, samples, cells.inner, &axis);
@@ -66,6 +68,8 @@ PairMeshStage buildPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& sam
   report["on_sheets"] = std::count(mesh.onSheets.begin(), mesh.onSheets.end(), 1);
   report["cells_classified_exactly"] = cells.exactQueries;
   report["cells_decided_by_reconstruction"] = cells.decidedByMesh;
+  report["reconstruction_ray_casts"] = cells.rayCasts;
+  report["reconstruction_segment_tests"] = cells.segmentTests;
   report["inverted_before_repair"] = mesh.counts.invertedBeforeRepair;
   report["moved_voronoi_nodes"] = mesh.counts.movedNodes;
   report["welded_voronoi_nodes"] = mesh.counts.weldedNodes;
@@ -74,6 +78,9 @@ PairMeshStage buildPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& sam
   report["relabelled_flat_cells"] = mesh.counts.relabelledFlatCells;
   report["inverted_after_repair"] = mesh.counts.invertedAfterRepair;
   report["seconds"] = {{"classify_cells", classifySeconds},
+                       {"classify_cells_near_test", cells.nearSeconds},
+                       {"classify_cells_links", cells.linkSeconds},
+                       {"classify_cells_rays", cells.raySeconds},
                        {"build", mesh.seconds},
                        {"repair", mesh.repairSeconds},
                        {"check", checkSeconds},

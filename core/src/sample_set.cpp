@@ -46,6 +46,7 @@ void SampleSet::validate() const {
   for (const auto& t : triangles)
     for (Index v : t) checkIndex(v, "triangle");
   if (triangleFace.size() != triangles.size()) fail("triangleFace size");
+  if (!triangleDeviation.empty() && triangleDeviation.size() != triangles.size()) fail("triangleDeviation size");
   if (!umbrellaOffsets.empty() && umbrellaOffsets.size() != n + 1) fail("umbrellaOffsets size");
 }
 

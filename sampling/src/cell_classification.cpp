@@ -1,5 +1,5 @@
 // CGAL (core) headers before OCCT's.
-#include "cadmedial/cell_sides.hpp"
+#include "cadmedial/reconstruction_sides.hpp"
 #include "cadmedial/surface_mesh_checks.hpp"
 #include "cadmedial/cell_classification.hpp"
 
@@ -28,11 +28,31 @@ CellClassification classifyCellsBySolid(const DelaunayVoronoi& dv, const TopoDS_
   box.Get(x0, y0, z0, x1, y1, z1);
   const double diagonal = std::sqrt(box.SquareExtent());
 
-  // Side of the reconstruction where it is closed and the centre is far from it.
+  // Cells that need an answer: the others are outer without one.
+  std::vector<std::uint8_t> wanted(dv.cellCount(), 0);
+  for (Index c = 0; c < dv.cellCount(); ++c) {
+    if (dv.isInfinite(c) || !(dv.circumradius(c) <= diagonal)) continue;
+    const Vec3& p = dv.circumcenter(c);
+    wanted[c] = !(p[0] < x0 || p[0] > x1 || p[1] < y0 || p[1] > y1 || p[2] < z0 || p[2] > z1);
+  }
+  // Side of the reconstruction where it is closed and the centre is farther
+  // from each triangle than that triangle's deviation from the exact surface
+  // (SampleSet::triangleDeviation, else the uniform band).
   std::vector<std::uint8_t> meshSide;
-  if (samples && band > 0 && !samples->triangles.empty() &&
-      checkSurfaceMesh(samples->points, samples->triangles).closedManifold())
-    meshSide = classifyCellSides(dv, *samples, {}, band, nullptr, true);
+  if (samples && !samples->triangles.empty() &&
+      (band > 0 || samples->triangleDeviation.size() == samples->triangles.size()) &&
+      checkSurfaceMesh(samples->points, samples->triangles).closedManifold()) {
+    const std::vector<double> deviation = samples->triangleDeviation.size() == samples->triangles.size()
+                                              ? samples->triangleDeviation
+                                              : std::vector<double>(samples->triangles.size(), band);
+    ReconstructionSides sides = reconstructionSides(dv, *samples, deviation, &wanted);
+    out.rayCasts = sides.rayCasts;
+    out.segmentTests = sides.segmentTests;
+    out.nearSeconds = sides.nearSeconds;
+    out.linkSeconds = sides.linkSeconds;
+    out.raySeconds = sides.raySeconds;
+    meshSide = std::move(sides.side);
+  }
 
   std::atomic<std::size_t> exact{0}, byMesh{0};
   tbb::enumerable_thread_specific<std::optional<BRepClass3d_SolidClassifier>> classifiers;
@@ -41,11 +61,11 @@ CellClassification classifyCellsBySolid(const DelaunayVoronoi& dv, const TopoDS_
                       auto& classifier = classifiers.local();
                       std::size_t queries = 0, decided = 0;
                       for (Index c = range.begin(); c != range.end(); ++c) {
-                        if (dv.isInfinite(c) || !(dv.circumradius(c) <= diagonal)) continue;
+                        if (!wanted[c]) continue;
                         const Vec3& p = dv.circumcenter(c);
-                        if (p[0] < x0 || p[0] > x1 || p[1] < y0 || p[1] > y1 || p[2] < z0 || p[2] > z1) continue;
-                        if (!meshSide.empty() && (meshSide[c] == kCellInside || meshSide[c] == kCellOutside)) {
-                          out.inner[c] = meshSide[c] == kCellInside ? 1 : 0;
+                        if (!meshSide.empty() &&
+                            (meshSide[c] == kReconstructionInside || meshSide[c] == kReconstructionOutside)) {
+                          out.inner[c] = meshSide[c] == kReconstructionInside ? 1 : 0;
                           ++decided;
                           continue;
                         }

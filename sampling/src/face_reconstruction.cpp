@@ -2,6 +2,7 @@
 // of each face's samples in its metric-scaled UV domain, with the boundary
 // samples as constraints and holes removed. Edge samples are shared by index,
 // so the union over faces is one stitched surface.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <list>
@@ -18,6 +19,7 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
@@ -27,6 +29,8 @@
 #include <Geom2d_Curve.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <TopoDS.hxx>
 
 #include "sampling_context.hpp"
@@ -89,6 +93,8 @@ double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c) {
 struct LoopPoint {
   gp_Pnt2d uv;
   Index sample;
+  int edge = -1;       // B-rep edge and 3D-curve parameter (edge = -1 at poles)
+  double param = 0;
 };
 
 // Boundary loops of a face in UV, following wire order and edge orientation.
@@ -114,7 +120,7 @@ std::vector<std::vector<LoopPoint>> boundaryLoops(const SamplingContext& ctx, co
       } else {
         const auto& samples = set.edges[e].samples;
         for (std::size_t k = 0; k < samples.size(); ++k)
-          pts.push_back({uvOnFace(edge, face, ctx.edgeParams[e][k]), samples[k]});
+          pts.push_back({uvOnFace(edge, face, ctx.edgeParams[e][k]), samples[k], e, ctx.edgeParams[e][k]});
       }
       if (we.Orientation() == TopAbs_REVERSED) std::reverse(pts.begin(), pts.end());
       // Consecutive edges share their vertex sample; their pcurves may miss
@@ -128,9 +134,21 @@ std::vector<std::vector<LoopPoint>> boundaryLoops(const SamplingContext& ctx, co
   return loops;
 }
 
+// Largest B-rep tolerance on a face, its edges and vertices: samples on the
+// edges lie on the 3D curves, which miss the face's surface by up to this.
+double faceTolerance(const TopoDS_Face& face) {
+  double tolerance = BRep_Tool::Tolerance(face);
+  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next())
+    tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Edge(e.Current())));
+  for (TopExp_Explorer v(face, TopAbs_VERTEX); v.More(); v.Next())
+    tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Vertex(v.Current())));
+  return tolerance;
+}
+
 // One face's triangles (already oriented outward) or the reason it failed.
 struct FaceMesh {
   std::vector<std::array<Index, 3>> triangles;
+  std::vector<double> deviation;  // per triangle, SampleSet::triangleDeviation
   int droppedTriangles = 0;
   double areaError = 0;  // |mesh area / exact area - 1|
   std::string problem;   // empty on success
@@ -159,7 +177,32 @@ FaceMesh reconstructFace(const SamplingContext& ctx, const SampleSet& set, int f
     auto toPlane = [&](const gp_Pnt2d& uv) { return K::Point_2(uv.X() * su, uv.Y() * sv); };
 
     Cdt cdt;
-    for (const auto& loop : boundaryLoops(ctx, set, f)) {
+    const auto loops = boundaryLoops(ctx, set, f);
+    // The triangles' boundary sides are chords of the edge curves: the strip
+    // of face between a chord and its arc has no triangle of its own, so the
+    // triangle on the chord answers for it (its deviation includes the arc's
+    // distance from the chord, measured on the 3D curve).
+    std::vector<std::pair<std::array<Index, 2>, double>> chordErrors;
+    for (const auto& loop : loops)
+      for (std::size_t k = 0; k < loop.size(); ++k) {
+        const LoopPoint &a = loop[k], &b = loop[(k + 1) % loop.size()];
+        if (a.edge < 0 || a.edge != b.edge || a.sample == b.sample) continue;
+        const Vec3 &pa = set.points[a.sample], &pb = set.points[b.sample];
+        const gp_Pnt ga(pa[0], pa[1], pa[2]), gb(pb[0], pb[1], pb[2]);
+        const gp_Vec chord(ga, gb);
+        const double length2 = chord.SquareMagnitude();
+        BRepAdaptor_Curve curve(ctx.topo.edge(a.edge));
+        double worst = 0;
+        constexpr int kArcPoints = 7;
+        for (int i = 1; i <= kArcPoints; ++i) {
+          const gp_Pnt x = curve.Value(a.param + (b.param - a.param) * i / (kArcPoints + 1));
+          const double t = length2 > 0 ? std::clamp(gp_Vec(ga, x).Dot(chord) / length2, 0.0, 1.0) : 0.0;
+          worst = std::max(worst, x.Distance(ga.Translated(t * chord)));
+        }
+        chordErrors.push_back({{std::min(a.sample, b.sample), std::max(a.sample, b.sample)}, worst});
+      }
+    std::sort(chordErrors.begin(), chordErrors.end());
+    for (const auto& loop : loops) {
       std::vector<Cdt::Vertex_handle> handles;
       for (const LoopPoint& p : loop) {
         Cdt::Vertex_handle vh = cdt.insert(toPlane(p.uv));
@@ -188,6 +231,51 @@ FaceMesh reconstructFace(const SamplingContext& ctx, const SampleSet& set, int f
       if (vh->info().id == kNoIndex) vh->info().id = interior[k];
     }
     markDomains(cdt);
+    const double tolerance = faceTolerance(face);
+    // Bound on |S(uv) - T(uv)| over the UV triangle (SampleSet::triangleDeviation).
+    // The error is e = S - T, linear in the vertex errors (samples off the
+    // surface by up to the B-rep tolerance) plus a part that vanishes at the
+    // vertices. For a quadratic part q = sum c_ij l_i l_j (l barycentric)
+    // |q| <= sum_ij |c_ij| / 4 = sum of |q| at the 3 edge midpoints; the
+    // factor 1.5 covers the higher-order terms, which are small against the
+    // quadratic one at the sampling's density, and the grid maximum covers the
+    // rest. Planar faces: S is affine in UV, only the tolerance remains.
+    auto deviationOf = [&](Cdt::Face_handle fh) {
+      gp_Pnt2d uv[3];
+      gp_XYZ p[3];
+      for (int i = 0; i < 3; ++i) {
+        const K::Point_2& q = fh->vertex(i)->point();
+        uv[i] = gp_Pnt2d(q.x() / su, q.y() / sv);
+        const Vec3& x = set.points[fh->vertex(i)->info().id];
+        p[i] = gp_XYZ(x[0], x[1], x[2]);
+      }
+      constexpr int kSteps = 4;
+      double gridMax = 0, vertexMax = 0, midpointSum = 0;
+      for (int i = 0; i <= kSteps; ++i)
+        for (int j = 0; i + j <= kSteps; ++j) {
+          const int k = kSteps - i - j;
+          const double l[3] = {double(i) / kSteps, double(j) / kSteps, double(k) / kSteps};
+          const gp_Pnt s = surf.Value(l[0] * uv[0].X() + l[1] * uv[1].X() + l[2] * uv[2].X(),
+                                      l[0] * uv[0].Y() + l[1] * uv[1].Y() + l[2] * uv[2].Y());
+          const double e = s.Distance(gp_Pnt(l[0] * p[0] + l[1] * p[1] + l[2] * p[2]));
+          gridMax = std::max(gridMax, e);
+          if (i == kSteps || j == kSteps || k == kSteps) vertexMax = std::max(vertexMax, e);
+          constexpr int half = kSteps / 2;  // the edge midpoints (2,2,0), (0,2,2), (2,0,2)
+          if ((i == 0 && j == half) || (j == 0 && k == half) || (k == 0 && i == half)) midpointSum += e;
+        }
+      double chordMax = 0;
+      for (int i = 0; i < 3; ++i) {
+        const Index a = fh->vertex(i)->info().id, b = fh->vertex((i + 1) % 3)->info().id;
+        const std::array<Index, 2> key{std::min(a, b), std::max(a, b)};
+        auto it = std::lower_bound(chordErrors.begin(), chordErrors.end(), std::make_pair(key, -1.0));
+        for (; it != chordErrors.end() && it->first == key; ++it) chordMax = std::max(chordMax, it->second);
+      }
+      return 1.5 * std::max({gridMax, midpointSum + 4 * vertexMax, chordMax}) + 2 * tolerance;
+    };
+    // Pole fans: a UV triangle with two corners on one sample has no mesh
+    // triangle; its patch is bounded by its deviation around the segment the
+    // mesh has instead, which lies on the kept triangles at that sample.
+    std::vector<std::pair<Index, double>> poles;
     double meshArea = 0;
     for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh) {
       if (!fh->info().inDomain()) continue;
@@ -197,20 +285,28 @@ FaceMesh reconstructFace(const SamplingContext& ctx, const SampleSet& set, int f
                                  std::to_string(static_cast<int>(surf.GetType())) + ")");
       if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) {
         ++out.droppedTriangles;
+        poles.emplace_back(tri[0] == tri[1] || tri[0] == tri[2] ? tri[0] : tri[1], deviationOf(fh));
         continue;
       }
       if (face.Orientation() == TopAbs_REVERSED) std::swap(tri[1], tri[2]);
       out.triangles.push_back(tri);
+      out.deviation.push_back(deviationOf(fh));
       meshArea += triangleArea(set.points[tri[0]], set.points[tri[1]], set.points[tri[2]]);
     }
+    for (const auto& [pole, d] : poles)
+      for (std::size_t t = 0; t < out.triangles.size(); ++t)
+        if (std::find(out.triangles[t].begin(), out.triangles[t].end(), pole) != out.triangles[t].end())
+          out.deviation[t] = std::max(out.deviation[t], d);
     GProp_GProps props;
     BRepGProp::SurfaceProperties(face, props);
     out.areaError = props.Mass() > 0 ? std::abs(meshArea / props.Mass() - 1.0) : 0.0;
   } catch (const std::exception& e) {
     out.triangles.clear();
+    out.deviation.clear();
     out.problem = e.what();
   } catch (const Standard_Failure& e) {
     out.triangles.clear();
+    out.deviation.clear();
     out.problem = e.GetMessageString();
   }
   return out;
@@ -248,6 +344,7 @@ ReconstructionReport reconstructFaces(SamplingContext& ctx, SampleSet& set) {
       set.triangleFace.push_back(f);
       for (Index v : tri) used[v] = 1;
     }
+    set.triangleDeviation.insert(set.triangleDeviation.end(), m.deviation.begin(), m.deviation.end());
   }
   for (Index i = 0; i < set.points.size(); ++i)
     if (set.kind[i] == SampleKind::Face && !used[i]) ++report.orphanSamples;

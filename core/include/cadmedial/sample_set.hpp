@@ -85,6 +85,15 @@ struct SampleSet {
   // Delaunay, consistently oriented with outward normals).
   std::vector<std::array<Index, 3>> triangles;
   std::vector<std::int32_t> triangleFace;  // per triangle: owning face id
+  // Per triangle (optional, empty when unknown, e.g. point clouds): a bound on
+  // how far the triangle lies from the face patch it stands for, i.e. on
+  // |S(u,v) - T(u,v)| over its UV triangle, S the face's surface and T the
+  // affine map onto the triangle (chord error, plus the B-rep tolerances).
+  // A point farther than this from every triangle is on the same side of
+  // the reconstruction as of the exact surface (the straight-line homotopy
+  // from surface to mesh never passes through it): the pair-mesh labels use
+  // it to skip the exact classifier (sampling/cell_classification.hpp).
+  std::vector<double> triangleDeviation;
   // Umbrella of sample i = triangles umbrellaTriangles[umbrellaOffsets[i] .. umbrellaOffsets[i+1]).
   std::vector<Index> umbrellaOffsets;
   std::vector<Index> umbrellaTriangles;

@@ -18,6 +18,10 @@ struct CellClassification {
   std::vector<std::uint8_t> inner;  // per cell id
   std::size_t exactQueries = 0;     // cells sent to the OCCT classifier
   std::size_t decidedByMesh = 0;    // cells decided by the reconstruction
+  std::size_t rayCasts = 0;         // ray parity tests on the reconstruction (one per group of cells)
+  std::size_t segmentTests = 0;     // centre-to-centre segments tested against the reconstruction
+  // Seconds of the reconstruction's part: near test, segment links, ray casts.
+  double nearSeconds = 0, linkSeconds = 0, raySeconds = 0;
 };
 
 // One classifier per thread (TBB); cells whose centre lies outside the
@@ -25,11 +29,14 @@ struct CellClassification {
 // centred inside would hold every sample) are outer without a query.
 //
 // With `samples` (the SampleSet the triangulation was built on) and a closed
-// manifold reconstruction: centres farther than `band` from the reconstructed
-// surface take its side (CGAL point-in-mesh, exact on the mesh); only those
-// within `band` go to the OCCT classifier. The reconstruction's triangles
-// have their vertices on the exact surface and deviate from it by their
-// chord error, well below band = h / 2 for the sampling's spacing h.
+// manifold reconstruction: a centre farther from every triangle t than t's
+// deviation from its face patch (SampleSet::triangleDeviation, measured at
+// sampling; planar faces: their tolerance) is on the same side of the
+// reconstruction as of the solid, and takes the reconstruction's side
+// (core/reconstruction_sides.hpp: groups of cells linked by centre-to-centre
+// segments that cross no triangle, one exact ray parity test per group).
+// Only the others go to the OCCT classifier. Without triangleDeviation a
+// uniform `band` stands for it (0: every cell goes to OCCT).
 CellClassification classifyCellsBySolid(const DelaunayVoronoi& dv, const TopoDS_Shape& solid,
                                         const SampleSet* samples = nullptr, double band = 0,
                                         double onTolerance = 1e-9);

@@ -1,0 +1,174 @@
+#include "cadmedial/reconstruction_sides.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <memory>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/internal/Side_of_triangle_mesh/Point_inside_vertical_ray_cast.h>
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include "cadmedial/timer.hpp"
+#include "cadmedial/union_find.hpp"
+
+namespace cadmedial {
+
+namespace {
+
+using Kernel = DelaunayVoronoi::Kernel;
+using Triangles = std::vector<Kernel::Triangle_3>;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator, CGAL::Tag_true>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+using RayCast = CGAL::internal::Point_inside_vertical_ray_cast<Kernel, Tree>;
+
+}  // namespace
+
+ReconstructionSides reconstructionSides(const DelaunayVoronoi& dv, const SampleSet& samples,
+                                        const std::vector<double>& deviation,
+                                        const std::vector<std::uint8_t>* wanted) {
+  const std::size_t m = dv.cellCount();
+  ReconstructionSides out;
+  Stopwatch watch;
+  out.side.assign(m, kReconstructionSkipped);
+  if (samples.triangles.empty() || deviation.size() != samples.triangles.size()) return out;
+
+  // The ray cast goes along +z: make z the shortest extent of the box (a
+  // cyclic permutation of the axes is exact and keeps parity and distances;
+  // see cell_sides.cpp, the bottle's rays ran inside its long wall).
+  int up = 2;
+  for (int k = 0; k < 3; ++k)
+    if (samples.bboxMax[k] - samples.bboxMin[k] < samples.bboxMax[up] - samples.bboxMin[up]) up = k;
+  auto permuted = [up](const Vec3& p) { return Kernel::Point_3(p[(up + 1) % 3], p[(up + 2) % 3], p[up]); };
+  Triangles soup;
+  soup.reserve(samples.triangles.size());
+  for (const auto& t : samples.triangles)
+    soup.emplace_back(permuted(samples.points[t[0]]), permuted(samples.points[t[1]]), permuted(samples.points[t[2]]));
+  Tree tree(soup.begin(), soup.end());
+  tree.build();
+  const CGAL::Bbox_3 box = tree.bbox();
+  const double maxDeviation = *std::max_element(deviation.begin(), deviation.end());
+
+  // Per cell: 0 skipped (infinite), 1 centre inside the mesh's box, 2 outside
+  // it (so outside the mesh), and whether it is near a triangle.
+  enum : std::uint8_t { kNone = 0, kInBox = 1, kOutOfBox = 2 };
+  std::vector<std::uint8_t> where(m, kNone), near(m, 0);
+  std::vector<Kernel::Point_3> centre(m);
+  auto inBox = [&](const Kernel::Point_3& p, double grow) {
+    return p.x() >= box.xmin() - grow && p.x() <= box.xmax() + grow && p.y() >= box.ymin() - grow &&
+           p.y() <= box.ymax() + grow && p.z() >= box.zmin() - grow && p.z() <= box.zmax() + grow;
+  };
+  std::atomic<std::size_t> nearCount{0};
+  tbb::enumerable_thread_specific<std::vector<Tree::Primitive_id>> hitsPerThread;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
+    auto& hits = hitsPerThread.local();
+    std::size_t nearHere = 0;
+    for (std::size_t id = r.begin(); id != r.end(); ++id) {
+      const Index c = static_cast<Index>(id);
+      if (dv.isInfinite(c)) continue;
+      const Vec3& x = dv.circumcenter(c);
+      if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2])) continue;
+      const Kernel::Point_3 p = permuted(x);
+      centre[id] = p;
+      where[id] = inBox(p, 0) ? kInBox : kOutOfBox;
+      if ((wanted && !(*wanted)[id]) || !inBox(p, maxDeviation)) continue;
+      // Near iff within d_t of some triangle t: the candidates are the
+      // triangles whose boxes meet the cube of half-side max d_t.
+      hits.clear();
+      const CGAL::Bbox_3 cube(p.x() - maxDeviation, p.y() - maxDeviation, p.z() - maxDeviation,
+                              p.x() + maxDeviation, p.y() + maxDeviation, p.z() + maxDeviation);
+      tree.all_intersected_primitives(cube, std::back_inserter(hits));
+      for (const auto& t : hits) {
+        const double d = deviation[static_cast<std::size_t>(t - soup.begin())];
+        // The squared distance is rounded; a relative margin keeps a centre at
+        // exactly d_t on the safe (near) side.
+        if (CGAL::squared_distance(p, *t) <= d * d * (1 + 1e-9)) {
+          near[id] = 1;
+          ++nearHere;
+          break;
+        }
+      }
+    }
+    nearCount += nearHere;
+  });
+  out.nearCells = nearCount;
+  out.nearSeconds = watch.seconds();
+  watch.restart();
+
+  // Links: two adjacent cells whose centres are joined by a segment touching
+  // no triangle (exact predicate) are on the same side of the closed mesh.
+  std::vector<std::uint8_t> linked(4 * m, 0);
+  std::atomic<std::size_t> tests{0};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
+    std::size_t testsHere = 0;
+    for (std::size_t id = r.begin(); id != r.end(); ++id) {
+      if (where[id] == kNone) continue;
+      const auto cell = dv.cell(static_cast<Index>(id));
+      for (int i = 0; i < 4; ++i) {
+        const std::size_t other = DelaunayVoronoi::cellId(cell->neighbor(i));
+        if (other <= id || where[other] == kNone) continue;
+        if (where[id] == kOutOfBox && where[other] == kOutOfBox) continue;  // both known outside
+        if (centre[id] == centre[other]) {
+          linked[4 * id + i] = 1;
+          continue;
+        }
+        ++testsHere;
+        if (!tree.do_intersect(Kernel::Segment_3(centre[id], centre[other]))) linked[4 * id + i] = 1;
+      }
+    }
+    tests += testsHere;
+  });
+  out.segmentTests = tests;
+  UnionFind groups(m);
+  for (std::size_t id = 0; id < m; ++id)
+    for (int i = 0; i < 4; ++i)
+      if (linked[4 * id + i])
+        groups.unite(static_cast<Index>(id), DelaunayVoronoi::cellId(dv.cell(static_cast<Index>(id))->neighbor(i)));
+  out.linkSeconds = watch.seconds();
+  watch.restart();
+
+  // Side per group: outside when it holds a centre outside the box, else one
+  // ray parity test from any member that is needed.
+  constexpr std::uint8_t kUnknown = 255;
+  std::vector<std::uint8_t> groupSide(m, kUnknown);
+  std::vector<Index> needsRay;  // group roots
+  for (std::size_t id = 0; id < m; ++id)
+    if (where[id] == kOutOfBox) groupSide[groups.find(static_cast<Index>(id))] = kReconstructionOutside;
+  std::vector<Index> rayFrom;
+  for (std::size_t id = 0; id < m; ++id) {
+    if (where[id] != kInBox || near[id] || (wanted && !(*wanted)[id])) continue;
+    const Index root = groups.find(static_cast<Index>(id));
+    if (groupSide[root] != kUnknown) continue;
+    groupSide[root] = kReconstructionSkipped;  // claimed: one ray for this group
+    needsRay.push_back(root);
+    rayFrom.push_back(static_cast<Index>(id));
+  }
+  tbb::parallel_for(std::size_t(0), needsRay.size(), [&](std::size_t k) {
+    groupSide[needsRay[k]] = RayCast()(centre[rayFrom[k]], tree) == CGAL::ON_BOUNDED_SIDE ? kReconstructionInside
+                                                                                         : kReconstructionOutside;
+  });
+  out.rayCasts = needsRay.size();
+
+  std::vector<std::uint8_t> counted(m, 0);
+  for (std::size_t id = 0; id < m; ++id) {
+    if (where[id] == kNone || (wanted && !(*wanted)[id])) continue;
+    if (near[id]) {
+      out.side[id] = kReconstructionNear;
+      continue;
+    }
+    const Index root = groups.find(static_cast<Index>(id));
+    out.side[id] = groupSide[root];
+    if (!counted[root]) {
+      counted[root] = 1;
+      ++out.groups;
+    }
+  }
+  out.raySeconds = watch.seconds();
+  return out;
+}
+
+}  // namespace cadmedial
