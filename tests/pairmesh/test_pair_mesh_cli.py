@@ -22,7 +22,8 @@ CADMEDIAL = os.environ.get("CADMEDIAL", "build/cli/cadmedial")
 MODELS_DIR = os.environ.get("CADMEDIAL_MODELS_DIR", "models")
 PUBLIC_DIR = os.environ.get("CADMEDIAL_PUBLIC_MODELS_DIR", "../shared/models/public")
 # Public dev models above this many bytes (lever, NIST CTC-01, bottle) take
-# 15 s to minutes in the exact cell classification; bench/ covers them.
+# 15 s to minutes (the repair on the lever and NIST CTC-01, the exact
+# classifier near the bottle's curved walls); bench/ covers them.
 PUBLIC_MAX_BYTES = 190_000
 # Known gap (issue #4), measured 2026-11-30: the repair leaves 0 inverted
 # elements on every bundled solid; on the public ones a few may stay

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <random>
 
@@ -122,10 +123,21 @@ TEST(PairMeshLabels, BundledModelsAgreeWithTheClassifierOnEveryCell) {
   }
 }
 
+// bottle.brep's labels still take over 10 minutes (OCCT on the many cells
+// near its curved thin walls, each query minimising over B-spline and torus
+// faces), and so would the reference; CADMEDIAL_TEST_SLOW_MODELS=1 includes it.
+bool slowModel(const std::string& file) { return file == "bottle.brep"; }
+
 TEST(PairMeshLabels, PublicDevModelsAgreeWithTheClassifier) {
   const auto files = test::publicModels("set=dev");
   if (files.empty()) GTEST_SKIP() << "../shared/models/public not present";
+  const char* slow = std::getenv("CADMEDIAL_TEST_SLOW_MODELS");
+  const bool includeSlow = slow && std::string(slow) == "1";
   for (const std::string& f : files) {
+    if (slowModel(f) && !includeSlow) {
+      std::printf("%-36s skipped (slow; CADMEDIAL_TEST_SLOW_MODELS=1 runs it)\n", f.c_str());
+      continue;
+    }
     const LoadedModel model = loadModel(test::publicModelsDir() + "/" + f);
     for (std::size_t i = 0; i < model.solids.size(); ++i) {
       const LabelCheck check = checkLabels(model.solids[i], f + "#" + std::to_string(i));
