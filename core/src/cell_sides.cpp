@@ -9,6 +9,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "cadmedial/reconstruction_sides.hpp"
 #include "cadmedial/surface_mesh_checks.hpp"
 
 namespace cadmedial {
@@ -105,6 +106,12 @@ std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const Sam
       return false;
     return RayCast()(q, *tree) == CGAL::ON_BOUNDED_SIDE;
   };
+  // The side of most cells without a ray each: cells whose centres a segment
+  // touching no triangle joins share a side (reconstruction_sides.hpp), so one
+  // ray per group decides; a ray of its own only for a centre on the mesh.
+  // Exactly the answers of one ray per cell (flange: 2.1 s -> see summary).
+  std::vector<std::uint8_t> groupSide;
+  if (tree) groupSide = reconstructionSides(dv, samples, std::vector<double>(samples.triangles.size(), 0.0), wanted).side;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 2048), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t id = r.begin(); id != r.end(); ++id) {
       const Index cell = static_cast<Index>(id);
@@ -113,7 +120,8 @@ std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const Sam
       if (!(dv.circumradius(cell) <= halfDiagonal) || !inBox(c)) continue;
       if (tree) {
         const Kernel::Point_3 p = permuted(c);  // distances are unchanged by the permutation
-        if (insideMesh(p))
+        const std::uint8_t known = groupSide[id];
+        if (known == kReconstructionInside || (known != kReconstructionOutside && insideMesh(p)))
           side[id] = markNearInside && tree->squared_distance(p) <= nearSquared ? kCellNearInside : kCellInside;
         else if (nearSquared > 0 && tree->squared_distance(p) <= nearSquared)
           side[id] = kCellNearOutside;
