@@ -103,11 +103,20 @@ TEST(Topology, SubResolutionIslandsAreDroppedButNeverTheLargestBall) {
   EXPECT_EQ(dropSubResolutionIslands(kept, 0.5, nullptr), 0u);
   EXPECT_EQ(topologyOf(kept).beta0, 2);
 
-  // A part whose whole axis is thin keeps the component with the largest ball.
+  // An island carrying a forced triangle is an edge's or corner's only
+  // attachment: kept.
+  MedialComplex forced = complexOf(7, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}});
+  for (Index v : {4, 5, 6}) forced.radius[v] = 0.1;
+  forced.provenance[2] = PolygonProvenance::ConvexEdgeTriangle;
+  EXPECT_EQ(dropSubResolutionIslands(forced, 0.5, nullptr), 0u);
+
+  // A part whose whole axis is thin keeps its largest component (by polygons),
+  // even when a smaller island holds the largest ball.
   MedialComplex thin = complexOf(7, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}});
   for (double& r : thin.radius) r = 0.01;
   thin.radius[5] = 0.02;
   EXPECT_EQ(dropSubResolutionIslands(thin, 0.5, nullptr), 1u);
-  ASSERT_EQ(thin.vertices.size(), 3u);
-  EXPECT_DOUBLE_EQ(*std::max_element(thin.radius.begin(), thin.radius.end()), 0.02);
+  ASSERT_EQ(thin.vertices.size(), 4u);
+  EXPECT_EQ(thin.polygonCount(), 2u);
+  EXPECT_DOUBLE_EQ(*std::max_element(thin.radius.begin(), thin.radius.end()), 0.01);
 }
