@@ -13,10 +13,12 @@ namespace cadmedial {
 // cycle is the three Voronoi edges of a degree-3 Delaunay edge; NIST FTC-11
 // likewise). A facet whose every vertex and edge already lies on the inner
 // complex is a convex disk spanned by points of the inner axis, so adding it
-// can only kill cycles that are null-homotopic through that disk: it adds
-// no vertex (medialness, coverage, attachment unchanged) and never removes a
-// loop that goes around a tunnel of the solid (that loop's disk would have
-// to leave the solid, and a facet's vertices are the inner axis' own).
+// only kills cycles that are null-homotopic through that disk: it adds no
+// vertex (medialness, coverage, attachment unchanged), and a loop around a
+// tunnel of the solid bounds no such disk unless the facet leaves the solid
+// between its inner vertices (a tunnel thinner than one Voronoi facet, i.e.
+// far below the sampling resolution). Single-pass: holes of two or more
+// facets stay.
 std::size_t fillSingleFacetHoles(const DelaunayVoronoi& dv, const SelectedFacets& selected, MedialComplex& mc) {
   if (dv.dimension() < 3) return 0;
   const auto& dt = dv.triangulation();

@@ -64,8 +64,9 @@ MedialComplex buildInnerComplex(const DelaunayVoronoi& dv, const SampleSet& samp
 std::size_t fillSingleFacetHoles(const DelaunayVoronoi& dv, const SelectedFacets& selected, MedialComplex& complex);
 
 // Removes every connected component whose largest medial radius is below
-// minRadius, except the component holding the largest radius of all, and
-// drops the vertices no polygon uses any more (see small_islands.cpp).
+// minRadius and which has no forced triangle, except the component with the
+// most polygons, and drops the vertices no polygon uses any more (see
+// small_islands.cpp).
 // Returns the number of components removed; *polygonsRemoved their polygons.
 std::size_t dropSubResolutionIslands(MedialComplex& complex, double minRadius, std::size_t* polygonsRemoved);
 
