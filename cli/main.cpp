@@ -36,6 +36,10 @@ int main(int argc, char** argv) {
                      "Angle condition threshold in degrees (default 5; 22.5 = pi/8 for point clouds and meshes)")
       ->check(CLI::Range(0.0, 89.0));
   runCmd->add_option("--rho", run.params.rho, "Ratio condition threshold (default 8)")->check(CLI::PositiveNumber);
+  bool keepTopologyArtefacts = false;
+  runCmd->add_flag("--keep-topology-artefacts", keepTopologyArtefacts,
+                   "Neither close one-facet holes nor drop sub-resolution islands of the inner axis "
+                   "(to see the raw Angle/Ratio selection; ARCHITECTURE.md)");
   runCmd->add_flag("--pair-mesh", run.pairMesh,
                    "Also build the pair-mesh (tetrahedra between the inner Voronoi diagram and the boundary): "
                    "pairmesh.vtu, pairmesh.node/.ele, iso_<t>.ply");
@@ -95,6 +99,10 @@ int main(int argc, char** argv) {
     if (*runCmd) {
       run.checkWithOracle = !noOracle;
       run.thetaGiven = runCmd->get_option("--theta")->count() > 0;
+      if (keepTopologyArtefacts) {
+        run.params.fillSingleFacetHoles = false;
+        run.params.islandRadiusFraction = 0;
+      }
       return runRunCommand(run);
     }
     if (*batchCmd) {

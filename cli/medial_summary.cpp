@@ -51,6 +51,9 @@ nlohmann::json medialSummaryJson(const SamplingReport& sampling, const MedialRes
                       {"walk_blocked_crossings", c.walkBlockedCrossings},
                       {"walk_surface_crossings_refused", c.walkSurfaceCrossingsRefused},
                       {"inner_facets_outside_surface", c.innerFacetsOutsideSurface},
+                      {"single_facet_holes_filled", c.singleFacetHolesFilled},
+                      {"sub_resolution_islands", c.subResolutionIslands},
+                      {"sub_resolution_island_polygons", c.subResolutionIslandPolygons},
                       {"walk_oracle_checked", c.oracleChecked},
                       {"walk_oracle_disagreements", c.oracleDisagreements}};
   j["seconds"] = {{"classify", sampling.secondsClassify},

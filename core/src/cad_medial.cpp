@@ -57,6 +57,12 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
 
   watch.restart();
   static_cast<MedialComplex&>(r) = buildInnerComplex(dv, samples, selected, r.forced, r.labels);
+  if (params.fillSingleFacetHoles) r.counts.singleFacetHolesFilled = fillSingleFacetHoles(dv, selected, r);
+  if (params.islandRadiusFraction > 0) {
+    const double spacing = samples.spacing > 0 ? samples.spacing : samples.bboxDiagonal() / 40;
+    r.counts.subResolutionIslands =
+        dropSubResolutionIslands(r, params.islandRadiusFraction * spacing, &r.counts.subResolutionIslandPolygons);
+  }
   r.times.complex = watch.seconds();
 
   watch.restart();

@@ -1,4 +1,6 @@
 // Sheets and Betti numbers on hand-built complexes, and the performance budget.
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "medial_checks.hpp"
@@ -80,4 +82,41 @@ TEST(Performance, PipelineWithinBudgetOfDelaunay) {
   const double ratio = r.times.total / r.times.delaunay;
   std::cout << s.size() << " samples: " << summary(r) << "\n  total / Delaunay = " << ratio << "\n";
   EXPECT_LE(ratio, 4.0);
+}
+
+TEST(Topology, SubResolutionIslandsAreDroppedButNeverTheLargestBall) {
+  // Component A (vertices 0-3, radius 1) and island B (4-6, radii 0.1-0.3).
+  MedialComplex mc = complexOf(7, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}});
+  for (Index v : {4, 5, 6}) mc.radius[v] = 0.1 * (v - 3);
+  std::size_t removed = 0;
+  EXPECT_EQ(dropSubResolutionIslands(mc, 0.5, &removed), 1u);
+  EXPECT_EQ(removed, 1u);
+  ASSERT_EQ(mc.vertices.size(), 4u);  // the island's vertices are gone too
+  EXPECT_EQ(mc.polygonCount(), 2u);
+  for (double r : mc.radius) EXPECT_EQ(r, 1.0);
+  EXPECT_EQ(topologyOf(mc).beta0, 1);
+
+  // One ball of B at the threshold keeps B (it is not below resolution).
+  MedialComplex kept = complexOf(7, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}});
+  for (Index v : {4, 5, 6}) kept.radius[v] = 0.1;
+  kept.radius[6] = 0.5;
+  EXPECT_EQ(dropSubResolutionIslands(kept, 0.5, nullptr), 0u);
+  EXPECT_EQ(topologyOf(kept).beta0, 2);
+
+  // An island carrying a forced triangle is an edge's or corner's only
+  // attachment: kept.
+  MedialComplex forced = complexOf(7, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}});
+  for (Index v : {4, 5, 6}) forced.radius[v] = 0.1;
+  forced.provenance[2] = PolygonProvenance::ConvexEdgeTriangle;
+  EXPECT_EQ(dropSubResolutionIslands(forced, 0.5, nullptr), 0u);
+
+  // A part whose whole axis is thin keeps its largest component (by polygons),
+  // even when a smaller island holds the largest ball.
+  MedialComplex thin = complexOf(7, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}});
+  for (double& r : thin.radius) r = 0.01;
+  thin.radius[5] = 0.02;
+  EXPECT_EQ(dropSubResolutionIslands(thin, 0.5, nullptr), 1u);
+  ASSERT_EQ(thin.vertices.size(), 4u);
+  EXPECT_EQ(thin.polygonCount(), 2u);
+  EXPECT_DOUBLE_EQ(*std::max_element(thin.radius.begin(), thin.radius.end()), 0.01);
 }

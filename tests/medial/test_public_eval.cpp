@@ -1,14 +1,16 @@
 // Every set=dev public model (../shared/models/public, skipped when absent),
 // default parameters, every solid: the DESIGN.md §6 metrics against OCCT's
 // exact geometry. Inside, coverage, convex-edge attachment and medialness must
-// meet the thresholds of the CAD_MEDIAL issue; topology and corner attachment
-// are printed (the eval table, scripts/eval_table.py --public) but not yet
-// asserted: some public parts still give extra components or loops (see
-// ARCHITECTURE.md, "Known gaps").
+// meet the thresholds of the CAD_MEDIAL issue, and β0/β1 of the axis must equal
+// the solid's (computed by OCCT from the B-rep, not from the axis) except on
+// the parts listed in kKnownTopologyGaps (ARCHITECTURE.md, "Known gaps").
+// Corner attachment is printed (scripts/eval_table.py --public).
 #include <gtest/gtest.h>
 
 #include <cctype>
 #include <cstdio>
+#include <set>
+#include <string>
 
 #include "cadmedial/medial.hpp"
 // OCCT after CGAL (OCCT's Handle macro).
@@ -24,6 +26,15 @@ namespace {
 // Above this many samples a model is left to scripts/eval_table.py: its
 // evaluation alone takes minutes, too long for the suite.
 constexpr std::size_t kMaxSamplesInSuite = 100000;
+
+// Parts whose axis still has extra components or loops (issue #3); every other
+// set=dev part must match the solid's β0 and β1.
+const std::set<std::string> kKnownTopologyGaps = {
+    "bm2_ec_lever-A.stp",                // β1: loops around the cusp region
+    "nist_ctc_01_asme1_rd.stp",          // islands and loops
+    "face_recognition_sample_part.stp",  // boss cut off: concave-edge ring (Angle test)
+    "bottle.brep",                       // islands and loops on smooth blends
+};
 
 class PublicEvaluation : public ::testing::TestWithParam<std::string> {};
 
@@ -49,6 +60,10 @@ TEST_P(PublicEvaluation, MeetsTheGeometricThresholds) {
     EXPECT_GE(r.attachment.edgeShare, 0.99) << "solid " << i;
     EXPECT_LE(r.medialness.median, 0.005) << "solid " << i;
     EXPECT_GE(r.topology.beta0, 1) << "solid " << i;
+    if (kKnownTopologyGaps.count(GetParam()) == 0) {
+      EXPECT_EQ(r.topology.beta0, r.topology.solidBeta0) << "solid " << i;
+      EXPECT_EQ(r.topology.beta1, r.topology.solidBeta1) << "solid " << i;
+    }
   }
 }
 

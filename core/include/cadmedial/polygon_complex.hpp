@@ -58,6 +58,18 @@ struct ComplexTopology {
 MedialComplex buildInnerComplex(const DelaunayVoronoi& dv, const SampleSet& samples, const SelectedFacets& selected,
                                 const ForcedTriangles& forced, const InnerOuterLabels& labels);
 
+// Adds every unselected Voronoi facet whose vertices and edges all lie on
+// the complex already (a one-facet hole in the inner axis, see
+// facet_holes.cpp); returns how many. Call before buildComplexEdges.
+std::size_t fillSingleFacetHoles(const DelaunayVoronoi& dv, const SelectedFacets& selected, MedialComplex& complex);
+
+// Removes every connected component whose largest medial radius is below
+// minRadius and which has no forced triangle, except the component with the
+// most polygons, and drops the vertices no polygon uses any more (see
+// small_islands.cpp).
+// Returns the number of components removed; *polygonsRemoved their polygons.
+std::size_t dropSubResolutionIslands(MedialComplex& complex, double minRadius, std::size_t* polygonsRemoved);
+
 ComplexEdges buildComplexEdges(const MedialComplex& complex);
 
 // Sheets = maximal sets of polygons connected across edges shared by exactly
