@@ -12,21 +12,10 @@
 
 #include <cmath>
 
+#include "pair_mesh_element_checks.hpp"
 #include "pair_mesh_node_position.hpp"
 
 namespace cadmedial {
-
-namespace {
-
-double orient(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-  const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  const double w[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
-  return (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])) /
-         6.0;
-}
-
-}  // namespace
 
 std::optional<Vec3> nearestValidNodePosition(const std::vector<Vec3>& nodes, Index node,
                                      const std::vector<std::array<Index, 4>>& elements, double reach) {
@@ -43,7 +32,7 @@ std::optional<Vec3> nearestValidNodePosition(const std::vector<Vec3>& nodes, Ind
     auto volumeAt = [&](const Vec3& p) {
       Vec3 q[4];
       for (int k = 0; k < 4; ++k) q[k] = e[k] == node ? p : nodes[e[k]];
-      return orient(q[0], q[1], q[2], q[3]);
+      return signedTetVolume(q[0], q[1], q[2], q[3]);
     };
     const double c = volumeAt(start);
     double g[3], norm = 0;
