@@ -1,11 +1,8 @@
 #include "cadmedial/cell_sides.hpp"
+#include "triangle_soup_tree.hpp"
 
 #include <cmath>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/Polygon_mesh_processing/internal/Side_of_triangle_mesh/Point_inside_vertical_ray_cast.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -16,15 +13,7 @@ namespace cadmedial {
 
 namespace {
 
-using Kernel = DelaunayVoronoi::Kernel;
-// Triangles stored in the tree's primitives (contiguous, no face -> vertex ->
-// point indirection per ray-box-triangle test).
-using Triangles = std::vector<Kernel::Triangle_3>;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator, CGAL::Tag_true>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-// What CGAL::Side_of_triangle_mesh does after its bounding-box test (that
-// class insists on building its tree from a face graph).
-using RayCast = CGAL::internal::Point_inside_vertical_ray_cast<Kernel, Tree>;
+using namespace soup;
 
 // Majority vote of the tangent planes at the cell's samples (see header).
 bool insideByTangentPlanes(const DelaunayVoronoi& dv, const SampleSet& samples, const std::vector<Vec3>& normals,

@@ -1,14 +1,11 @@
 #include "cadmedial/reconstruction_sides.hpp"
+#include "triangle_soup_tree.hpp"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <memory>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/Polygon_mesh_processing/internal/Side_of_triangle_mesh/Point_inside_vertical_ray_cast.h>
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -20,11 +17,7 @@ namespace cadmedial {
 
 namespace {
 
-using Kernel = DelaunayVoronoi::Kernel;
-using Triangles = std::vector<Kernel::Triangle_3>;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator, CGAL::Tag_true>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-using RayCast = CGAL::internal::Point_inside_vertical_ray_cast<Kernel, Tree>;
+using namespace soup;
 
 }  // namespace
 
