@@ -108,55 +108,46 @@ std::pair<std::vector<std::array<Index, 3>>, Score> bestTriangulation(const std:
 
 }  // namespace
 
-FaceVertexPolygons::FaceVertexPolygons(const PairMesh& m) {
+std::size_t retriangulateFaceVertexPolygons(PairMesh& m) {
+  // Only the polygons holding a bad element, each with its element slots.
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> slots;
   for (std::size_t i = 0; i < m.tets.size(); ++i)
-    if (m.type[i] == PairElementType::FaceVertex) slots_[facetKey(m.medialSimplex[i])].push_back(i);
-}
+    if (m.type[i] == PairElementType::FaceVertex && elementNeedsRepair(m.nodes, m.tets[i]))
+      slots[facetKey(m.medialSimplex[i])];
+  if (slots.empty()) return 0;
+  for (std::size_t i = 0; i < m.tets.size(); ++i)
+    if (m.type[i] == PairElementType::FaceVertex) {
+      const auto it = slots.find(facetKey(m.medialSimplex[i]));
+      if (it != slots.end()) it->second.push_back(i);
+    }
 
-std::size_t FaceVertexPolygons::improve(PairMesh& m, const std::vector<std::size_t>& elements) const {
-  std::unordered_set<std::uint64_t> done;
   std::size_t changed = 0;
-  for (std::size_t e : elements) {
-    if (m.type[e] != PairElementType::FaceVertex) continue;
-    const std::uint64_t key = facetKey(m.medialSimplex[e]);
-    if (!done.insert(key).second) continue;
-    const auto found = slots_.find(key);
-    if (found == slots_.end()) continue;
-    const std::vector<std::size_t>& slots = found->second;
-    const Index a = m.tets[slots[0]][0];
+  for (const auto& [key, elements] : slots) {
+    const Index a = m.tets[elements[0]][0];
     Index b = kNoIndex;
     std::vector<std::array<Index, 3>> current;
     std::size_t badBefore = 0;
-    for (std::size_t i : slots) {
+    for (std::size_t i : elements) {
       const auto& t = m.tets[i];
       if (t[0] == a) current.push_back({t[1], t[2], t[3]});
       else b = t[0];
       badBefore += elementNeedsRepair(m.nodes, t) ? 1 : 0;
     }
-    if (badBefore == 0 || b == kNoIndex || 2 * current.size() != slots.size()) continue;
+    if (b == kNoIndex || 2 * current.size() != elements.size()) continue;
     const std::vector<Index> polygon = polygonOf(current);
     if (polygon.size() < 4) continue;  // a triangle has one triangulation
     const auto [triangles, score] = bestTriangulation(m.nodes, a, b, polygon);
     if (score.bad >= badBefore) continue;
     for (std::size_t t = 0; t < triangles.size(); ++t) {
       const auto& [p, q, r] = triangles[t];
-      for (const auto& [slot, element] : {std::pair<std::size_t, std::array<Index, 4>>{slots[2 * t], {a, p, q, r}},
-                                          std::pair<std::size_t, std::array<Index, 4>>{slots[2 * t + 1], {b, p, r, q}}}) {
-        m.tets[slot] = element;
-        m.boundarySimplex[slot] = {element[0], kNoIndex, kNoIndex};
-      }
+      m.tets[elements[2 * t]] = {a, p, q, r};
+      m.tets[elements[2 * t + 1]] = {b, p, r, q};
+      m.boundarySimplex[elements[2 * t]] = {a, kNoIndex, kNoIndex};
+      m.boundarySimplex[elements[2 * t + 1]] = {b, kNoIndex, kNoIndex};
     }
     ++changed;
   }
   return changed;
-}
-
-std::size_t retriangulateFaceVertexPolygons(PairMesh& m) {
-  std::vector<std::size_t> bad;
-  for (std::size_t i = 0; i < m.tets.size(); ++i)
-    if (m.type[i] == PairElementType::FaceVertex && elementNeedsRepair(m.nodes, m.tets[i])) bad.push_back(i);
-  if (bad.empty()) return 0;
-  return FaceVertexPolygons(m).improve(m, bad);
 }
 
 }  // namespace cadmedial

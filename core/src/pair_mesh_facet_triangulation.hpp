@@ -2,11 +2,7 @@
 // of Face-Vertex pyramids.
 #pragma once
 
-#include <array>
 #include <cstddef>
-#include <cstdint>
-#include <unordered_map>
-#include <vector>
 
 #include "cadmedial/pair_mesh.hpp"
 
@@ -18,24 +14,11 @@ namespace cadmedial {
 // neighbours (the polygon's sides coned to a and b) do not change. Built as a
 // fan, which is fine while the polygon is convex; once the repair has moved
 // its nodes it can fold where another triangulation would not.
-class FaceVertexPolygons {
- public:
-  // Indexes the element slots of every polygon; valid until elements are
-  // added, removed or reordered (re-triangulating keeps the slots).
-  explicit FaceVertexPolygons(const PairMesh& mesh);
-
-  // For the polygons of the given elements (others are ignored): picks the
-  // triangulation with the fewest elements needing repair, then the largest
-  // smallest volume relative to size (dynamic programming over the polygon,
-  // O(k^3)), and keeps it when it has fewer bad elements than the current
-  // one. Returns the number of polygons re-triangulated.
-  std::size_t improve(PairMesh& mesh, const std::vector<std::size_t>& elements) const;
-
- private:
-  std::unordered_map<std::uint64_t, std::vector<std::size_t>> slots_;
-};
-
-// Every polygon with an element needing repair, as above.
+// For every polygon with an element needing repair: picks the triangulation
+// with the fewest such elements, then the largest smallest volume relative to
+// size (dynamic programming over the polygon, O(k^3)), and keeps it when it
+// has fewer bad elements than the current one. Element slots stay the same.
+// Returns the number of polygons re-triangulated.
 std::size_t retriangulateFaceVertexPolygons(PairMesh& mesh);
 
 }  // namespace cadmedial
