@@ -81,7 +81,10 @@ class DaskWorkerDeath(BatchTestCase):
         self.empty = list(write_bad_files(os.path.join(self.tmp, "bad")))[0]
         driver = subprocess.Popen(driver_command([self.box, self.empty], out, "--spacing", "0.12", *FAST),
                                   env=driver_env(), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-        child = wait_for(lambda: [p for p in processes_mentioning(out) if "run" in self.cmdline(p)], 60)
+        # The broken file's child also mentions OUTDIR and runs `run`: pick the box's
+        # own child, else a slow machine may find (and kill the worker of) the wrong one.
+        child = wait_for(lambda: [p for p in processes_mentioning(out)
+                                  if "run" in self.cmdline(p) and self.box in self.cmdline(p)], 60)
         self.assertTrue(child, "the box never started on a worker")
         return driver, child[0]
 
