@@ -75,9 +75,9 @@ TEST(Topology, SheetsSplitAtJunctionEdges) {
 TEST(Performance, PipelineWithinBudgetOfDelaunay) {
   // DESIGN.md §7: report against CGAL's own Delaunay time on the same points.
   // The target (≤ 3×) is tracked by bench/run_bench.py on a quiet machine;
-  // here only a gross regression fails (≤ 8×: a quadratic step would be far
-  // above), since ctest runs tests in parallel on a loaded machine (4.46×
-  // seen in CI with -j2 against 3.27× alone).
+  // here only a gross regression fails, since ctest runs tests in parallel on
+  // a loaded machine: 3.2–3.8× alone on this 53 k-sample box, about 10 % more
+  // under ctest -j2, so ≤ 5× (a quadratic step would be far above).
   SamplingOptions o;
   o.spacing = 0.01;
   const SampleSet s = samplePlanarSolid(makeBox(1, 0.8, 0.6), o);
@@ -87,9 +87,13 @@ TEST(Performance, PipelineWithinBudgetOfDelaunay) {
   MedialParams noFill = MedialParams::cad();
   noFill.fillSingleFacetHoles = false;
   const MedialResult without = computeCadMedial(s, noFill);
+  const double fillSeconds = r.times.complex - without.times.complex;
   std::cout << "  complex stage with / without the one-facet hole fill: " << r.times.complex << " / "
-            << without.times.complex << " s\n";
-  EXPECT_LE(ratio, 8.0);
+            << without.times.complex << " s (fill / Delaunay = " << fillSeconds / r.times.delaunay << ")\n";
+  EXPECT_LE(ratio, 5.0);
+  // The fill once walked the ring of every Delaunay edge next to the axis
+  // (2.3× the Delaunay time here); counting votes takes about 0.4×.
+  EXPECT_LE(fillSeconds, r.times.delaunay);
 }
 
 TEST(Topology, SubResolutionIslandsAreDroppedButNeverTheLargestBall) {
