@@ -40,6 +40,10 @@ int main(int argc, char** argv) {
   runCmd->add_flag("--keep-topology-artefacts", keepTopologyArtefacts,
                    "Neither close one-facet holes nor drop sub-resolution islands of the inner axis "
                    "(to see the raw Angle/Ratio selection; ARCHITECTURE.md)");
+  bool seedAngleTest = false;
+  runCmd->add_flag("--seed-angle-test", seedAngleTest,
+                   "At concave-edge samples, judge the Angle condition against every umbrella normal, as seed 002 "
+                   "does, not only the faces an edge heads over (ARCHITECTURE.md)");
   runCmd->add_flag("--pair-mesh", run.pairMesh,
                    "Also build the pair-mesh (tetrahedra between the inner Voronoi diagram and the boundary): "
                    "pairmesh.vtu, pairmesh.node/.ele, iso_<t>.ply");
@@ -99,6 +103,7 @@ int main(int argc, char** argv) {
     if (*runCmd) {
       run.checkWithOracle = !noOracle;
       run.thetaGiven = runCmd->get_option("--theta")->count() > 0;
+      if (seedAngleTest) run.params.oneSidedConcaveEdges = false;
       if (keepTopologyArtefacts) {
         run.params.fillSingleFacetHoles = false;
         run.params.islandRadiusFraction = 0;

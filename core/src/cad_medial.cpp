@@ -26,7 +26,8 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
   Stopwatch total;
   Stopwatch watch;
 
-  const UmbrellaData umbrellas = computeUmbrellaData(samples);
+  UmbrellaData umbrellas = computeUmbrellaData(samples);
+  if (!params.oneSidedConcaveEdges) umbrellas.sideStart.clear();
   r.times.umbrellas = watch.seconds();
 
   const SelectedFacets selected = selectFacetsByAngleAndRatio(dv, umbrellas, params);

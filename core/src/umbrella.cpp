@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace cadmedial {
@@ -36,20 +37,62 @@ TriangleData triangleData(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 }  // namespace
 
+std::vector<std::uint8_t> concaveEdgeSamples(const SampleSet& samples) {
+  std::vector<std::uint8_t> flags(samples.size(), 0);
+  if (samples.kind.size() != samples.size() || samples.owner.size() != samples.size()) return flags;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    if (samples.kind[i] != SampleKind::Edge) continue;
+    const std::int32_t e = samples.owner[i];
+    if (e >= 0 && static_cast<std::size_t>(e) < samples.edges.size() && samples.edges[e].kind == EdgeKind::Concave)
+      flags[i] = 1;
+  }
+  return flags;
+}
+
 UmbrellaData computeUmbrellaData(const SampleSet& samples) {
+  const std::vector<std::uint8_t> oneSided = concaveEdgeSamples(samples);
   if (samples.umbrellaOffsets.size() == samples.size() + 1)
     return umbrellaDataFromTriangles(samples.points, samples.triangles, samples.umbrellaOffsets,
-                                     samples.umbrellaTriangles);
+                                     samples.umbrellaTriangles, &oneSided);
   SampleSet rebuilt;
   rebuilt.points = samples.points;
   rebuilt.triangles = samples.triangles;
   rebuilt.buildUmbrellas();
   return umbrellaDataFromTriangles(samples.points, samples.triangles, rebuilt.umbrellaOffsets,
-                                   rebuilt.umbrellaTriangles);
+                                   rebuilt.umbrellaTriangles, &oneSided);
+}
+
+// Why one-sided umbrellas: at a sample inside a concave edge the umbrella
+// holds triangles of both faces, and each face lies on one side of the edge
+// only. The Angle condition asks whether pq is near tangent to the surface at
+// p; a chord from p that leaves across the edge, away from a face, is not
+// tangent to that face however flat it runs against its plane (a boss
+// standing on a plane: the chords across the boss's foot lie in the plane yet
+// inside the solid, and only they join the boss's axis to the rest). So a
+// triangle of such a sample judges only the directions over its own corner
+// wedge (widened, see satisfiesAngleOrRatio).
+bool headsOverWedge(const std::array<std::array<double, 3>, 2>& wedge, const std::array<double, 3>& n,
+                    const double dir[3], double slackCos) {
+  const double dn = n[0] * dir[0] + n[1] * dir[1] + n[2] * dir[2];
+  double u[3] = {dir[0] - dn * n[0], dir[1] - dn * n[1], dir[2] - dn * n[2]};
+  const double len = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  if (!(len > 0)) return true;  // along the normal: no side to tell
+  for (double& c : u) c /= len;
+  const auto& a = wedge[0];
+  const auto& b = wedge[1];
+  auto tripleWithNormal = [&](const double* x, const double* y) {  // (x × y) · n
+    return (x[1] * y[2] - x[2] * y[1]) * n[0] + (x[2] * y[0] - x[0] * y[2]) * n[1] + (x[0] * y[1] - x[1] * y[0]) * n[2];
+  };
+  const double sense = tripleWithNormal(a.data(), b.data());  // the wedge's turning sense (< 180°)
+  if (tripleWithNormal(a.data(), u) * sense >= 0 && tripleWithNormal(u, b.data()) * sense >= 0) return true;
+  const double toA = a[0] * u[0] + a[1] * u[1] + a[2] * u[2];
+  const double toB = b[0] * u[0] + b[1] * u[1] + b[2] * u[2];
+  return std::max(toA, toB) >= slackCos;
 }
 
 UmbrellaData umbrellaDataFromTriangles(const std::vector<Vec3>& points, const std::vector<std::array<Index, 3>>& triangles,
-                                       const std::vector<Index>& offsets, const std::vector<Index>& members) {
+                                       const std::vector<Index>& offsets, const std::vector<Index>& members,
+                                       const std::vector<std::uint8_t>* oneSided) {
   const std::size_t n = offsets.empty() ? 0 : offsets.size() - 1;
   const std::size_t tcount = triangles.size();
   std::vector<TriangleData> tri(tcount);
@@ -83,6 +126,26 @@ UmbrellaData umbrellaDataFromTriangles(const std::vector<Vec3>& points, const st
     for (Index k = offsets[i]; k < offsets[i + 1]; ++k) {
       const TriangleData& t = tri[members[k]];
       if (t.valid) u.normals[out++] = t.normal;
+    }
+  }
+  if (oneSided && oneSided->size() == n && std::find(oneSided->begin(), oneSided->end(), 1) != oneSided->end()) {
+    u.sideStart.assign(n, kNoIndex);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!(*oneSided)[i]) continue;
+      u.sideStart[i] = static_cast<Index>(u.wedges.size());
+      const Vec3& p = points[i];
+      for (Index k = offsets[i]; k < offsets[i + 1]; ++k) {
+        if (!tri[members[k]].valid) continue;
+        std::array<std::array<double, 3>, 2> wedge{};
+        int r = 0;
+        for (Index v : triangles[members[k]]) {
+          if (v == i || r == 2) continue;
+          const double d[3] = {points[v][0] - p[0], points[v][1] - p[1], points[v][2] - p[2]};
+          const double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+          wedge[r++] = {d[0] / l, d[1] / l, d[2] / l};
+        }
+        u.wedges.push_back(wedge);
+      }
     }
   }
   return u;

@@ -24,7 +24,64 @@ SampleSet flatUmbrella() {
   return s;
 }
 
+// Sample 0 at the origin inside a concave edge along y: face A is the plane
+// z = 0 over x >= 0, face B the plane x = 0 over z >= 0, and the solid is
+// everything but the quadrant x > 0, z > 0 (a wall standing on a floor).
+// Samples 1, 2 are the edge's neighbours; 3-5 on A, 6-8 on B.
+SampleSet concaveEdgeUmbrella() {
+  SampleSet s;
+  s.points = {{0, 0, 0},      {0, -0.1, 0},     {0, 0.1, 0},      {0.07, -0.07, 0}, {0.1, 0, 0},
+              {0.07, 0.07, 0}, {0, -0.07, 0.07}, {0, 0, 0.1},      {0, 0.07, 0.07}};
+  s.kind = {SampleKind::Edge, SampleKind::Edge, SampleKind::Edge, SampleKind::Face, SampleKind::Face,
+            SampleKind::Face, SampleKind::Face, SampleKind::Face, SampleKind::Face};
+  s.owner = {0, 0, 0, 0, 0, 0, 1, 1, 1};
+  s.onConvexEdge.assign(9, 0);
+  s.isNonConcaveCorner.assign(9, 0);
+  EdgeInfo edge;
+  edge.kind = EdgeKind::Concave;
+  edge.faceLeft = 0;
+  edge.faceRight = 1;
+  edge.samples = {1, 0, 2};
+  s.edges = {edge};
+  s.triangles = {{0, 1, 3}, {0, 3, 4}, {0, 4, 5}, {0, 5, 2}, {0, 6, 1}, {0, 7, 6}, {0, 8, 7}, {0, 2, 8}};
+  s.triangleFace = {0, 0, 0, 0, 1, 1, 1, 1};
+  s.buildUmbrellas();
+  return s;
+}
+
 }  // namespace
+
+TEST(Selection, ConcaveEdgeSamplesJudgeOnlyTheFacesAnEdgeHeadsOver) {
+  UmbrellaData oneSided = computeUmbrellaData(concaveEdgeUmbrella());
+  ASSERT_EQ(oneSided.sideStart.size(), 9u);
+  EXPECT_NE(oneSided.sideStart[0], kNoIndex);
+  EXPECT_EQ(oneSided.sideStart[3], kNoIndex);
+  UmbrellaData seed = oneSided;
+  seed.sideStart.clear();  // seed 002: every normal judges every edge
+  const double sin5 = std::sin(5 * M_PI / 180);
+  const double len = 0.2;  // the Ratio condition fails: 0.2 < 8 · 0.05
+  auto test = [&](const UmbrellaData& u, std::array<double, 3> d) {
+    const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    for (double& c : d) c *= len / n;
+    return satisfiesAngleOrRatio(u, 0, d.data(), len, sin5, 8);
+  };
+  // Chords into the solid that run flat against a face they leave behind
+  // (across a boss's foot): selected only with one-sided umbrellas.
+  for (const auto& d : std::vector<std::array<double, 3>>{{-1, 0, 0}, {0, 0, -1}, {-0.5, 0.87, 0}}) {
+    EXPECT_TRUE(test(oneSided, d)) << d[0] << " " << d[1] << " " << d[2];
+    EXPECT_FALSE(test(seed, d)) << d[0] << " " << d[1] << " " << d[2];
+  }
+  // Steep to both faces: selected either way.
+  EXPECT_TRUE(test(oneSided, {-1, 0, -1}));
+  EXPECT_TRUE(test(seed, {-1, 0, -1}));
+  // Surface edges stay rejected: over face A, over face B, along the edge,
+  // and along the edge tilted 3° out of A's half-plane (the widened wedge).
+  for (const auto& d : std::vector<std::array<double, 3>>{
+           {1, 0.3, 0}, {0, -0.3, 1}, {0, 1, 0}, {0, -1, 0}, {-0.05, 1, 0}, {0, 1, -0.05}, {-0.05, 1, -0.05}}) {
+    EXPECT_FALSE(test(oneSided, d)) << d[0] << " " << d[1] << " " << d[2];
+    EXPECT_FALSE(test(seed, d)) << d[0] << " " << d[1] << " " << d[2];
+  }
+}
 
 TEST(Selection, AngleConditionThreshold) {
   const UmbrellaData u = computeUmbrellaData(flatUmbrella());

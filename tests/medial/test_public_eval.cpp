@@ -30,9 +30,8 @@ constexpr std::size_t kMaxSamplesInSuite = 100000;
 // Parts whose axis still has extra components or loops (issue #3); every other
 // set=dev part must match the solid's β0 and β1.
 const std::set<std::string> kKnownTopologyGaps = {
-    "bm2_ec_lever-A.stp",                // β1: loops around the cusp region
+    "bm2_ec_lever-A.stp",                // islands and loops around the zero-angle cusp
     "nist_ctc_01_asme1_rd.stp",          // islands and loops
-    "face_recognition_sample_part.stp",  // boss cut off: concave-edge ring (Angle test)
     "bottle.brep",                       // islands and loops on smooth blends
 };
 

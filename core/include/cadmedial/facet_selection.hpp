@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "cadmedial/delaunay.hpp"
@@ -23,10 +24,16 @@ inline bool satisfiesAngleOrRatio(const UmbrellaData& u, Index p, const double d
   if (b == e) return false;
   if (len > rho * u.maxCircumradius[p]) return true;
   const double threshold = sinTheta * len;
+  const Index side = u.sideStart.empty() ? kNoIndex : u.sideStart[p];
+  // One-sided umbrella (concave edge): widen each wedge by 2θ (cos 2θ =
+  // 1 - 2 sin²θ), so edges along the concave edge itself stay judged by both faces.
+  const double slackCos = 1 - 2 * sinTheta * sinTheta;
   for (Index k = b; k < e; ++k) {
     const auto& n = u.normals[k];
     const double d = n[0] * dir[0] + n[1] * dir[1] + n[2] * dir[2];
-    if (!(std::abs(d) > threshold)) return false;
+    if (std::abs(d) > threshold) continue;
+    if (side != kNoIndex && !headsOverWedge(u.wedges[side + (k - b)], n, dir, slackCos)) continue;
+    return false;
   }
   return true;
 }

@@ -23,6 +23,10 @@ struct MedialParams {
   double thetaDeg = 5.0;
   // Ratio condition [ρ]: |pq| > ρ · (largest umbrella circumradius at p).
   double rho = 8.0;
+  // At samples inside a concave edge, an umbrella triangle judges [θ] only
+  // for the edges heading over its corner wedge (umbrella.cpp: the chords
+  // across a boss's foot). false = seed 002's test against every normal.
+  bool oneSidedConcaveEdges = true;
   WalkBlocking walkBlocking = WalkBlocking::None;  // measured best, see inner_outer.hpp
   // The outer walk only crosses Voronoi edges whose two ends lie outside the
   // sampled surface (cell_sides.hpp). Where sampling is coarse for the local
