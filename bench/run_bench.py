@@ -190,8 +190,23 @@ def main():
     text += ("## Size series (box.step through `cadmedial run`, spacing shrinking by √2)\n\n" + table(series) +
              f"\n\nGrowth: {growth}.\n")
     if args.out:
-        pathlib.Path(args.out).write_text(text)
+        write_between_markers(pathlib.Path(args.out), text)
     print(text)
+
+
+BEGIN, END = "<!-- stage bench: begin -->", "<!-- stage bench: end -->"
+
+
+def write_between_markers(path, text):
+    """Replaces only this script's section: the hand-written notes and the
+    other benches' sections of the same file stay."""
+    block = BEGIN + "\n" + text.rstrip() + "\n" + END + "\n"
+    old = path.read_text() if path.exists() else ""
+    if BEGIN in old and END in old:
+        new = old[:old.index(BEGIN)] + block + old[old.index(END) + len(END) + 1:]
+    else:
+        new = block + ("\n" + old if old else "")
+    path.write_text(new)
 
 
 if __name__ == "__main__":

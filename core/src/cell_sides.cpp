@@ -95,6 +95,17 @@ std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const Sam
       return false;
     return RayCast()(q, *tree) == CGAL::ON_BOUNDED_SIDE;
   };
+  // Near the mesh (within nearTolerance)? The exact distance query (closest
+  // point, 60 % of the flange's run when asked for every outside cell) only
+  // where a box of that half-width around the centre meets a triangle: if no
+  // triangle meets the box, none meets the ball inside it, so the answer is
+  // the same.
+  auto nearMesh = [&](const Kernel::Point_3& p) {
+    if (!(nearSquared > 0)) return false;
+    const CGAL::Bbox_3 box(p.x() - nearTolerance, p.y() - nearTolerance, p.z() - nearTolerance,
+                           p.x() + nearTolerance, p.y() + nearTolerance, p.z() + nearTolerance);
+    return tree->do_intersect(box) && tree->squared_distance(p) <= nearSquared;
+  };
   // The side of most cells without a ray each: cells whose centres a segment
   // touching no triangle joins share a side (reconstruction_sides.hpp), so one
   // ray per group decides; a ray of its own only for a centre on the mesh.
@@ -111,8 +122,8 @@ std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const Sam
         const Kernel::Point_3 p = permuted(c);  // distances are unchanged by the permutation
         const std::uint8_t known = groupSide[id];
         if (known == kReconstructionInside || (known != kReconstructionOutside && insideMesh(p)))
-          side[id] = markNearInside && tree->squared_distance(p) <= nearSquared ? kCellNearInside : kCellInside;
-        else if (nearSquared > 0 && tree->squared_distance(p) <= nearSquared)
+          side[id] = markNearInside && nearMesh(p) ? kCellNearInside : kCellInside;
+        else if (nearMesh(p))
           side[id] = kCellNearOutside;
       } else if (insideByTangentPlanes(dv, samples, normals, cell)) {
         side[id] = kCellInside;
