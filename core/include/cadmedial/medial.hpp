@@ -43,10 +43,10 @@ struct MedialCounts {
   std::size_t sheets = 0;
   std::size_t walkBlockedCrossings = 0;
   std::size_t walkSurfaceCrossingsRefused = 0;  // crossings refused: a Voronoi vertex inside the surface
-  std::size_t innerFacetsOutsideSurface = 0;
-  std::size_t singleFacetHolesFilled = 0;     // unselected facets closing a one-facet hole
-  std::size_t subResolutionIslands = 0;       // components dropped (all radii < islandRadiusFraction h)
-  std::size_t subResolutionIslandPolygons = 0;    // unreached facets relabelled outer (a vertex outside)
+  std::size_t innerFacetsOutsideSurface = 0;    // unreached facets relabelled outer (a vertex outside)
+  std::size_t singleFacetHolesFilled = 0;       // unselected facets closing a one-facet hole
+  std::size_t subResolutionIslands = 0;         // components dropped (all radii < islandRadiusFraction h)
+  std::size_t subResolutionIslandPolygons = 0;  // their polygons
   std::size_t oracleChecked = 0;          // bounded selected facets checked by the inside oracle
   std::size_t oracleDisagreements = 0;    // ... whose walk label != oracle at their centroid
   std::size_t oracleForcedChecked = 0;    // forced triangles checked (reported apart: samples on the
