@@ -18,6 +18,13 @@ namespace {
 constexpr double kMinDistanceFraction = 0.75;  // Poisson radius = this × face spacing
 constexpr double kDartsPerDisk = 12.0;         // candidates per expected sample
 constexpr double kMaxDarts = 4e6;              // per face, to bound time on huge faces
+constexpr double kTileRadii = 32.0;            // tile side, in Poisson radii (~800 samples a tile)
+
+// Tiles along a UV side of 3D length `length`: about kTileRadii radii each.
+int tileCount(double length, double radius) {
+  const double tiles = length / (kTileRadii * radius);
+  return std::isfinite(tiles) ? static_cast<int>(std::clamp(std::ceil(tiles), 1.0, 4096.0)) : 1;
+}
 }  // namespace
 
 void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned seed) {
@@ -33,8 +40,9 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
     BRepAdaptor_Surface surf(face, true);
     double u0, u1, v0, v1;
     BRepTools::UVBounds(face, u0, u1, v0, v1);
-    // Largest area element over the UV box, for rejection sampling.
-    double maxJ = 0;
+    // Largest area element over the UV box, for rejection sampling, and the
+    // mean lengths of the UV box's sides in 3D, for the tiles below.
+    double maxJ = 0, sumSu = 0, sumSv = 0;
     constexpr int n = 12;
     for (int i = 0; i <= n; ++i)
       for (int j = 0; j <= n; ++j) {
@@ -42,23 +50,43 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
         gp_Vec su, sv;
         surf.D1(u0 + (u1 - u0) * i / n, v0 + (v1 - v0) * j / n, p, su, sv);
         maxJ = std::max(maxJ, su.Crossed(sv).Magnitude());
+        sumSu += su.Magnitude();
+        sumSv += sv.Magnitude();
       }
     if (!(maxJ > 0)) continue;
     maxJ *= 1.5;
 
+    // The darts go tile by tile over the UV box (equal UV areas, an equal share
+    // of the darts each, serpentine order), not scattered over the whole face:
+    // each clearance check then reads the hash cells the previous darts just
+    // read. Scattered darts missed the cache on almost every lookup (90 % of
+    // the sampling time on a 540 k-sample box). Positions stay uniform in UV;
+    // only the order differs, and each dart still has to clear every sample
+    // accepted before it.
+    const double count = static_cast<double>((n + 1) * (n + 1));
+    const int tilesU = tileCount(sumSu / count * (u1 - u0), radius);
+    const int tilesV = tileCount(sumSv / count * (v1 - v0), radius);
+    const double du = (u1 - u0) / tilesU, dv = (v1 - v0) / tilesV;
+
     BRepTopAdaptor_FClass2d classifier(face, 1e-9);
     std::mt19937_64 rng(seed * 1000003ull + static_cast<unsigned>(f));
-    std::uniform_real_distribution<double> U(u0, u1), V(v0, v1), unit(0.0, 1.0);
-    const double darts = std::min(kMaxDarts, kDartsPerDisk * area / (radius * radius));
-    for (long k = 0; k < static_cast<long>(darts); ++k) {
-      const double u = U(rng), v = V(rng);
-      gp_Pnt p;
-      gp_Vec su, sv;
-      surf.D1(u, v, p, su, sv);
-      if (unit(rng) * maxJ > su.Crossed(sv).Magnitude()) continue;
-      if (!builder.isClear(p, radius)) continue;
-      if (classifier.Perform(gp_Pnt2d(u, v)) != TopAbs_IN) continue;
-      ctx.recordFaceUv(builder.add(p, SampleKind::Face, f, radius), gp_Pnt2d(u, v));
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const long darts = static_cast<long>(std::min(kMaxDarts, kDartsPerDisk * area / (radius * radius)));
+    const long tiles = static_cast<long>(tilesU) * tilesV;
+    for (long t = 0; t < tiles; ++t) {
+      const long row = t / tilesU, column = row % 2 == 0 ? t % tilesU : tilesU - 1 - t % tilesU;
+      const double tu = u0 + du * static_cast<double>(column), tv = v0 + dv * static_cast<double>(row);
+      const long dartsHere = (t + 1) * darts / tiles - t * darts / tiles;
+      for (long k = 0; k < dartsHere; ++k) {
+        const double u = tu + du * unit(rng), v = tv + dv * unit(rng);
+        gp_Pnt p;
+        gp_Vec su, sv;
+        surf.D1(u, v, p, su, sv);
+        if (unit(rng) * maxJ > su.Crossed(sv).Magnitude()) continue;
+        if (!builder.isClear(p, radius)) continue;
+        if (classifier.Perform(gp_Pnt2d(u, v)) != TopAbs_IN) continue;
+        ctx.recordFaceUv(builder.add(p, SampleKind::Face, f, radius), gp_Pnt2d(u, v));
+      }
     }
   }
 }
