@@ -67,26 +67,10 @@ std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const Sam
 
   // When the reconstruction is a closed manifold, an exact point-in-mesh test
   // (CGAL AABB tree, ray parity) decides; otherwise the tangent-plane vote.
-  Triangles soup;
   const bool closed = !samples.triangles.empty() && checkSurfaceMesh(samples.points, samples.triangles).closedManifold();
-  // CGAL casts a vertical (+z) ray first. Along the long axis of a thin-walled
-  // part that ray runs inside the wall past thousands of triangle boxes (the
-  // bottle: 3/4 of the pipeline time), so the mesh and the queries get their
-  // axes cyclically permuted to make z the shortest extent of the bounding
-  // box. Parity does not depend on the ray direction and a cyclic permutation
-  // is exact, so the answers are the same.
-  int up = 2;
-  for (int k = 0; k < 3; ++k)
-    if (samples.bboxMax[k] - samples.bboxMin[k] < samples.bboxMax[up] - samples.bboxMin[up]) up = k;
-  auto permuted = [up](const Vec3& p) { return Kernel::Point_3(p[(up + 1) % 3], p[(up + 2) % 3], p[up]); };
-  std::unique_ptr<Tree> tree;
-  if (closed) {
-    soup.reserve(samples.triangles.size());
-    for (const auto& t : samples.triangles)
-      soup.emplace_back(permuted(samples.points[t[0]]), permuted(samples.points[t[1]]), permuted(samples.points[t[2]]));
-    tree = std::make_unique<Tree>(soup.begin(), soup.end());
-    tree->build();
-  }
+  std::unique_ptr<SoupTree> mesh;
+  if (closed) mesh = std::make_unique<SoupTree>(samples);
+  const Tree* tree = mesh ? &mesh->tree : nullptr;
   const double nearSquared = nearTolerance * nearTolerance;
   const CGAL::Bbox_3 treeBox = tree ? tree->bbox() : CGAL::Bbox_3();
   auto insideMesh = [&](const Kernel::Point_3& q) {
@@ -111,7 +95,7 @@ std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const Sam
   // ray per group decides; a ray of its own only for a centre on the mesh.
   // Exactly the answers of one ray per cell (flange cell_sides 2.1 s -> 0.61 s).
   std::vector<std::uint8_t> groupSide;
-  if (tree) groupSide = reconstructionSides(dv, samples, std::vector<double>(samples.triangles.size(), 0.0), wanted).side;
+  if (mesh) groupSide = reconstructionSides(*mesh, dv, std::vector<double>(samples.triangles.size(), 0.0), wanted).side;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 2048), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t id = r.begin(); id != r.end(); ++id) {
       const Index cell = static_cast<Index>(id);
@@ -119,7 +103,7 @@ std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const Sam
       const Vec3& c = dv.circumcenter(cell);
       if (!(dv.circumradius(cell) <= halfDiagonal) || !inBox(c)) continue;
       if (tree) {
-        const Kernel::Point_3 p = permuted(c);  // distances are unchanged by the permutation
+        const Kernel::Point_3 p = mesh->permuted(c);  // distances are unchanged by the permutation
         const std::uint8_t known = groupSide[id];
         if (known == kReconstructionInside || (known != kReconstructionOutside && insideMesh(p)))
           side[id] = markNearInside && nearMesh(p) ? kCellNearInside : kCellInside;

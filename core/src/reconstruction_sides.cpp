@@ -24,25 +24,28 @@ using namespace soup;
 ReconstructionSides reconstructionSides(const DelaunayVoronoi& dv, const SampleSet& samples,
                                         const std::vector<double>& deviation,
                                         const std::vector<std::uint8_t>* wanted) {
+  if (samples.triangles.empty() || deviation.size() != samples.triangles.size()) {
+    ReconstructionSides out;
+    out.side.assign(dv.cellCount(), kReconstructionSkipped);
+    return out;
+  }
+  Stopwatch watch;
+  const SoupTree mesh(samples);
+  const double treeSeconds = watch.seconds();
+  ReconstructionSides out = reconstructionSides(mesh, dv, deviation, wanted);
+  out.nearSeconds += treeSeconds;
+  return out;
+}
+
+ReconstructionSides reconstructionSides(const SoupTree& mesh, const DelaunayVoronoi& dv,
+                                        const std::vector<double>& deviation,
+                                        const std::vector<std::uint8_t>* wanted) {
   const std::size_t m = dv.cellCount();
   ReconstructionSides out;
   Stopwatch watch;
   out.side.assign(m, kReconstructionSkipped);
-  if (samples.triangles.empty() || deviation.size() != samples.triangles.size()) return out;
-
-  // The ray cast goes along +z: make z the shortest extent of the box (a
-  // cyclic permutation of the axes is exact and keeps parity and distances;
-  // see cell_sides.cpp, the bottle's rays ran inside its long wall).
-  int up = 2;
-  for (int k = 0; k < 3; ++k)
-    if (samples.bboxMax[k] - samples.bboxMin[k] < samples.bboxMax[up] - samples.bboxMin[up]) up = k;
-  auto permuted = [up](const Vec3& p) { return Kernel::Point_3(p[(up + 1) % 3], p[(up + 2) % 3], p[up]); };
-  Triangles soup;
-  soup.reserve(samples.triangles.size());
-  for (const auto& t : samples.triangles)
-    soup.emplace_back(permuted(samples.points[t[0]]), permuted(samples.points[t[1]]), permuted(samples.points[t[2]]));
-  Tree tree(soup.begin(), soup.end());
-  tree.build();
+  if (mesh.triangles.empty() || deviation.size() != mesh.triangles.size()) return out;
+  const Tree& tree = mesh.tree;
   const CGAL::Bbox_3 box = tree.bbox();
   const double maxDeviation = *std::max_element(deviation.begin(), deviation.end());
 
@@ -65,10 +68,14 @@ ReconstructionSides reconstructionSides(const DelaunayVoronoi& dv, const SampleS
       if (dv.isInfinite(c)) continue;
       const Vec3& x = dv.circumcenter(c);
       if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2])) continue;
-      const Kernel::Point_3 p = permuted(x);
+      const Kernel::Point_3 p = mesh.permuted(x);
       centre[id] = p;
       where[id] = inBox(p, 0) ? kInBox : kOutOfBox;
-      if ((wanted && !(*wanted)[id]) || !inBox(p, maxDeviation)) continue;
+      // A zero band (cell_sides) makes "near" mean "on a triangle": such a
+      // centre's segments all touch that triangle, so it links to nothing and
+      // its group's ray starts at the centre itself, the ray a near cell would
+      // get from the caller. The near query is skipped: same answers.
+      if (!(maxDeviation > 0) || (wanted && !(*wanted)[id]) || !inBox(p, maxDeviation)) continue;
       // Near iff within d_t of some triangle t: the candidates are the
       // triangles whose boxes meet the cube of half-side max d_t.
       hits.clear();
@@ -76,7 +83,7 @@ ReconstructionSides reconstructionSides(const DelaunayVoronoi& dv, const SampleS
                               p.x() + maxDeviation, p.y() + maxDeviation, p.z() + maxDeviation);
       tree.all_intersected_primitives(cube, std::back_inserter(hits));
       for (const auto& t : hits) {
-        const double d = deviation[static_cast<std::size_t>(t - soup.begin())];
+        const double d = deviation[static_cast<std::size_t>(t - mesh.triangles.begin())];
         // The squared distance is rounded; a relative margin keeps a centre at
         // exactly d_t on the safe (near) side.
         if (CGAL::squared_distance(p, *t) <= d * d * (1 + 1e-9)) {

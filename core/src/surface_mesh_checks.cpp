@@ -1,5 +1,7 @@
 #include "cadmedial/surface_mesh_checks.hpp"
 
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -53,7 +55,9 @@ SurfaceMeshStats checkSurfaceMesh(const std::vector<Vec3>& points, const std::ve
                              p[2] * (q[0] * r[1] - q[1] * r[0])) /
                             6.0;
   }
-  std::sort(uses.begin(), uses.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  // In parallel: the sort is most of this check, which runs on every
+  // pipeline's reconstruction (6 × 10^6 uses at 10^6 samples).
+  tbb::parallel_sort(uses.begin(), uses.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
     int forward = 0;
