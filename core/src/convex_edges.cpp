@@ -88,8 +88,7 @@ void procConvexEdges(const DelaunayVoronoi& dv, const SampleSet& samples, const 
   for (std::size_t k = 0; k < samples.triplets.size(); ++k) {
     if (redCells[k][0] == kNoIndex) continue;
     const Index s = dv.canonicalSample(samples.triplets[k].s);
-    facets.clear();
-    dt.finite_incident_facets(dv.vertex(s), std::back_inserter(facets));
+    dv.finiteIncidentFacets(s, facets);
     for (const auto& f : facets) {
       const Index c1 = DelaunayVoronoi::cellId(f.first);
       const Index c2 = DelaunayVoronoi::cellId(f.first->neighbor(f.second));

@@ -138,4 +138,16 @@ bool DelaunayVoronoi::cellHasSample(Index id, Index sample) const {
   return false;
 }
 
+void DelaunayVoronoi::finiteIncidentFacets(Index sample, std::vector<Facet>& out) const {
+  out.clear();
+  dt_.finite_incident_facets(vertex_[sample], std::back_inserter(out));
+  for (Facet& f : out) {
+    const Cell_handle other = f.first->neighbor(f.second);
+    if (cellId(other) < cellId(f.first)) f = Facet(other, other->index(f.first));
+  }
+  std::sort(out.begin(), out.end(), [](const Facet& a, const Facet& b) {
+    return cellId(a.first) != cellId(b.first) ? cellId(a.first) < cellId(b.first) : a.second < b.second;
+  });
+}
+
 }  // namespace cadmedial

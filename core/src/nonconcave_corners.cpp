@@ -10,7 +10,6 @@ void procNonconcaveCorners(const DelaunayVoronoi& dv, const SampleSet& samples, 
                            ForcedTriangles& out) {
   Stopwatch watch;
   if (dv.dimension() < 3) return;
-  const auto& dt = dv.triangulation();
 
   std::vector<Index> corners;
   for (std::size_t i = 0; i < samples.isNonConcaveCorner.size(); ++i)
@@ -21,8 +20,7 @@ void procNonconcaveCorners(const DelaunayVoronoi& dv, const SampleSet& samples, 
   std::vector<DelaunayVoronoi::Facet> facets;
   for (Index p : corners) {
     ++out.cornersProcessed;
-    facets.clear();
-    dt.finite_incident_facets(dv.vertex(p), std::back_inserter(facets));
+    dv.finiteIncidentFacets(p, facets);
     for (const auto& f : facets) {
       const auto c = f.first;
       const int opposite = f.second;

@@ -67,6 +67,12 @@ class DelaunayVoronoi {
     return dt_.is_infinite(v) ? kNoIndex : v->info();
   }
   bool cellHasSample(Index id, Index sample) const;
+  // The finite facets (Delaunay triangles) around sample's vertex, each named
+  // from the lower id of its two cells, sorted by (cell id, index). CGAL's own
+  // order, and which of the two cells names a facet, changed from run to run
+  // on the same input, and so did the order and orientation of fan triangles
+  // in the outputs.
+  void finiteIncidentFacets(Index sample, std::vector<Facet>& out) const;
 
   // --- samples = Delaunay vertices ----------------------------------------
   // The vertex at sample i's location (shared by duplicates).
