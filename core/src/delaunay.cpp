@@ -2,6 +2,11 @@
 
 #include <tbb/parallel_for.h>
 
+#include <CGAL/Cartesian_converter.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -14,11 +19,25 @@ namespace cadmedial {
 
 namespace {
 
-// Circumcenter of a Delaunay cell. A flat cell (four cocircular coplanar
-// samples, e.g. a rectangle of edge samples and triplet legs on a planar face)
-// has no finite circumsphere: CGAL's formula then divides by ~0 and returns a
-// point at infinity or far outside. Its dual Voronoi vertex degenerates to the
-// centre of the common circle, which the largest facet's circumcenter gives.
+// A nearly flat cell's fourth sample within this fraction of its longest
+// edge of the other three's circle counts as cocircular (see below); edge
+// samples and triplet legs are placed to ~1e-13.
+constexpr double kCocircularTolerance = 1e-7;
+
+// Circumcenter of a Delaunay cell. A nearly flat cell (volume below 1e-10 of
+// its longest edge cubed) is one of two things:
+// * four cocircular samples (a rectangle of edge samples and triplet legs on
+//   a planar face) lifted off their plane by rounding: the circumsphere is
+//   then undefined up to that rounding and CGAL's formula returns a point
+//   anywhere on the circle's axis, at infinity or far outside. The Voronoi
+//   vertex degenerates to the circle's centre, which the largest facet's
+//   circumcenter gives.
+// * a genuine sliver, its fourth sample well off the others' circle: its
+//   circumsphere is huge and its centre far away (outside the solid, over a
+//   planar face of the hull). Taking the circle's centre there put a bogus
+//   Voronoi vertex next to the face, with a radius that is no empty ball's
+//   (trj4_d2-tc-214: an inner island of three such vertices, radius 7.4 with
+//   a sample 1.65 away). Its centre is computed exactly instead.
 DelaunayVoronoi::Point robustCircumcenter(const DelaunayVoronoi::Point& a, const DelaunayVoronoi::Point& b,
                                          const DelaunayVoronoi::Point& c, const DelaunayVoronoi::Point& d) {
   using K = DelaunayVoronoi::Kernel;
@@ -44,7 +63,16 @@ DelaunayVoronoi::Point robustCircumcenter(const DelaunayVoronoi::Point& a, const
       skip = i;
     }
   }
-  return CGAL::circumcenter(*pts[(skip + 1) % 4], *pts[(skip + 2) % 4], *pts[(skip + 3) % 4]);
+  const auto centre = CGAL::circumcenter(*pts[(skip + 1) % 4], *pts[(skip + 2) % 4], *pts[(skip + 3) % 4]);
+  const double circleRadius = std::sqrt(CGAL::squared_distance(centre, *pts[(skip + 1) % 4]));
+  const double fourth = std::sqrt(CGAL::squared_distance(centre, *pts[skip]));
+  if (std::abs(fourth - circleRadius) <= kCocircularTolerance * std::sqrt(longest)) return centre;
+  using Exact = CGAL::Simple_cartesian<CGAL::Exact_rational>;  // no lazy values shared across threads
+  const CGAL::Cartesian_converter<K, Exact> toExact;
+  const auto exact = CGAL::circumcenter(toExact(a), toExact(b), toExact(c), toExact(d));
+  const DelaunayVoronoi::Point far(CGAL::to_double(exact.x()), CGAL::to_double(exact.y()), CGAL::to_double(exact.z()));
+  if (std::isfinite(far.x()) && std::isfinite(far.y()) && std::isfinite(far.z())) return far;
+  return centre;
 }
 
 }  // namespace

@@ -70,3 +70,46 @@ TEST(Delaunay, RejectsNonFiniteAndHandlesFlatInput) {
   EXPECT_EQ(flat.dimension(), 2);
   EXPECT_EQ(flat.cellCount(), 0u);
 }
+
+namespace {
+
+double distance(const Vec3& a, const Vec3& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// The only finite cell of four points.
+Index onlyFiniteCell(const DelaunayVoronoi& dv) {
+  for (Index id = 0; id < dv.cellCount(); ++id)
+    if (!dv.isInfinite(id)) return id;
+  return kNoIndex;
+}
+
+}  // namespace
+
+// A nearly flat cell whose fourth point is well off the others' circle is a
+// genuine sliver: its Voronoi vertex is its (far) circumcenter, equidistant
+// from all four samples. The circle's centre, which cocircular flat cells
+// get, is no empty ball's centre here (it put a bogus inner island on
+// trj4_d2-tc-214).
+TEST(Delaunay, NearlyFlatSliverKeepsItsTrueCircumcenter) {
+  const std::vector<Vec3> points{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.9, 0.8, 1e-12}};
+  DelaunayVoronoi dv(points);
+  ASSERT_EQ(dv.dimension(), 3);
+  const Index cell = onlyFiniteCell(dv);
+  ASSERT_NE(cell, kNoIndex);
+  const Vec3& c = dv.circumcenter(cell);
+  EXPECT_GT(dv.circumradius(cell), 1e6) << "a sliver's circumsphere is huge";
+  for (const Vec3& p : points) EXPECT_NEAR(distance(c, p), dv.circumradius(cell), 1e-6 * dv.circumradius(cell));
+}
+
+// Four cocircular points lifted off their plane by rounding: the Voronoi
+// vertex is the circle's centre, not wherever rounding puts the circumcenter.
+TEST(Delaunay, NearlyFlatCocircularCellGetsTheCircleCentre) {
+  const std::vector<Vec3> points{{0, 0, 0}, {1, 0, 0}, {1, 1, 1e-13}, {0, 1, 0}};
+  DelaunayVoronoi dv(points);
+  ASSERT_EQ(dv.dimension(), 3);
+  const Index cell = onlyFiniteCell(dv);
+  ASSERT_NE(cell, kNoIndex);
+  EXPECT_LT(distance(dv.circumcenter(cell), {0.5, 0.5, 0}), 1e-9);
+  EXPECT_NEAR(dv.circumradius(cell), std::sqrt(0.5), 1e-9);
+}
