@@ -108,8 +108,19 @@ PointMedialResult computeMedial(const std::vector<Vec3>& points, const MedialPar
         for (const Index* c = selected.ringBegin(f); c != selected.ringEnd(f); ++c) onRing[*c] = 1;
     cellInside = classifyCellSides(dv, samples, outwardSampleNormals(samples), 0, &onRing);
   }
+  // A Voronoi vertex a million diagonals away is at infinity for any use of
+  // the axis: the exact centre of a sliver of nearly coplanar samples
+  // (delaunay.cpp) lies ~1e15 away. Facets through one are dropped with the
+  // unbounded ones (the whole axis of an open mesh kept them, 3e18 wide).
+  const double farRadius = 1e6 * samples.bboxDiagonal();
+  auto reachesInfinity = [&](Index f) {
+    if (selected.unbounded[f]) return true;
+    for (const Index* c = selected.ringBegin(f); c != selected.ringEnd(f); ++c)
+      if (!(dv.circumradius(*c) <= farRadius)) return true;
+    return false;
+  };
   for (Index f = 0; f < selected.size(); ++f) {
-    if (selected.unbounded[f]) {
+    if (reachesInfinity(f)) {
       labels.facetOuter[f] = 1;
       ++info.unboundedFacetsDropped;
       continue;

@@ -16,6 +16,19 @@ Vec3 facetCentroid(const DelaunayVoronoi& dv, const SelectedFacets& sel, Index f
   return {c[0] / n, c[1] / n, c[2] / n};
 }
 
+// A Voronoi vertex no inner ball has: radius above half the bounding-box
+// diagonal, or centre outside the box (far centres of slivers and flat cells
+// over the hull). A polygon with such a vertex is not inside the solid,
+// whatever its centroid - the mean of points 1e15 away in different
+// directions - happens to hit.
+bool beyondSolid(const DelaunayVoronoi& dv, const SampleSet& samples, Index cell) {
+  if (!(dv.circumradius(cell) <= 0.5 * samples.bboxDiagonal())) return true;
+  const Vec3& c = dv.circumcenter(cell);
+  for (int k = 0; k < 3; ++k)
+    if (!(c[k] >= samples.bboxMin[k] && c[k] <= samples.bboxMax[k])) return true;
+  return false;
+}
+
 Vec3 forcedCentroid(const DelaunayVoronoi& dv, const SampleSet& samples, const ForcedTriangle& t) {
   Vec3 c{0, 0, 0};
   int n = 0;
@@ -157,7 +170,10 @@ InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& 
     for (Index f = 0; f < nf; ++f) {
       if (selected.unbounded[f]) continue;
       ++out.oracleFacetsChecked;
-      const bool inside = oracle(facetCentroid(dv, selected, f));
+      bool far = false;
+      for (const Index* it = selected.ringBegin(f); it != selected.ringEnd(f) && !far; ++it)
+        far = beyondSolid(dv, samples, *it);
+      const bool inside = !far && oracle(facetCentroid(dv, selected, f));
       const bool inner = !out.facetOuter[f];
       if (inside != inner) {
         ++out.oracleFacetDisagreements;
@@ -166,7 +182,9 @@ InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& 
     }
     for (std::size_t i = 0; i < forced.triangles.size(); ++i) {
       ++out.oracleForcedChecked;
-      const bool inside = oracle(forcedCentroid(dv, samples, forced.triangles[i]));
+      bool far = false;
+      for (Index v : forced.triangles[i].cells) far = far || (v != kNoIndex && beyondSolid(dv, samples, v));
+      const bool inside = !far && oracle(forcedCentroid(dv, samples, forced.triangles[i]));
       if (inside == (out.forcedOuter[i] != 0)) ++out.oracleForcedDisagreements;
     }
     out.oracleSeconds = ow.seconds();

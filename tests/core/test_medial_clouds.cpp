@@ -208,3 +208,26 @@ TEST(MedialClouds, DegenerateInputs) {
   EXPECT_THROW(computeMedial(pts, MedialParams::pointCloud(), {{0, 1, static_cast<Index>(pts.size())}}),
                std::invalid_argument);
 }
+
+// Random samples on the planar faces of a box, lifted off their planes by
+// rounding-sized noise, make nearly flat slivers whose exact circumcenters
+// lie ~1e15 away. The whole axis drops the facets through them with the
+// unbounded ones instead of drawing polygons 1e18 wide.
+TEST(MedialClouds, WholeAxisStaysNearTheCloudDespiteSlivers) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), noise(-1e-15, 1e-15);
+  std::vector<Vec3> points;
+  for (int face = 0; face < 6; ++face)
+    for (int i = 0; i < 400; ++i) {
+      Vec3 p{unit(random), unit(random), unit(random)};
+      p[face / 2] = (face % 2) + noise(random);
+      points.push_back(p);
+    }
+  const PointMedialResult whole = computeMedial(points);
+  ASSERT_GT(whole.polygonCount(), 0u);
+  double farthest = 0;
+  for (const Vec3& v : whole.vertices) farthest = std::max({farthest, std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
+  std::printf("whole axis of a jittered box cloud: %zu polygons, farthest vertex coordinate %.3g\n",
+              whole.polygonCount(), farthest);
+  EXPECT_LT(farthest, 1e6);
+}

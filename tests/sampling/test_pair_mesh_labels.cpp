@@ -83,8 +83,13 @@ LabelCheck checkLabels(const TopoDS_Shape& solid, const std::string& name, doubl
     const Vec3& x = dv.circumcenter(c);
     if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2])) return;
     const gp_Pnt p(x[0], x[1], x[2]);
-    classifier->Perform(p, 1e-9);
-    const bool inside = classifier->State() == TopAbs_IN;
+    // Outside the solid's box is outside: OCCT's classifier answers IN or ON
+    // for some sliver centres ~1e15 away (rounding at that scale).
+    bool inside = false;
+    if (!box.IsOut(p)) {
+      classifier->Perform(p, 1e-9);
+      inside = classifier->State() == TopAbs_IN;
+    }
     if (inside == (fast.inner[c] != 0)) return;
     BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeVertex(p).Vertex(), solid);
     if (distance.IsDone() && distance.Value() <= onDistance) {
