@@ -64,10 +64,10 @@ int runRunCommand(const RunCommandOptions& options) {
     InsideOracle oracle;
     BRepClass3d_SolidClassifier classifier(model.solids[i]);
     Bnd_Box solidBox;
-    BRepBndLib::Add(model.solids[i], solidBox);
+    if (options.checkWithOracle) BRepBndLib::Add(model.solids[i], solidBox);
     if (options.checkWithOracle)
       oracle = [&classifier, &solidBox](const Vec3& p) {
-        // Outside the box is outside (OCCT answers IN for some points ~1e15 away).
+        // Outside the box is outside (OCCT answers IN or ON for some points ~1e15 away).
         const gp_Pnt q(p[0], p[1], p[2]);
         if (solidBox.IsOut(q)) return false;
         classifier.Perform(q, 1e-9);

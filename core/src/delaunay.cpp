@@ -67,6 +67,8 @@ DelaunayVoronoi::Point robustCircumcenter(const DelaunayVoronoi::Point& a, const
   const double circleRadius = std::sqrt(CGAL::squared_distance(centre, *pts[(skip + 1) % 4]));
   const double fourth = std::sqrt(CGAL::squared_distance(centre, *pts[skip]));
   if (std::abs(fourth - circleRadius) <= kCocircularTolerance * std::sqrt(longest)) return centre;
+  // No division by zero: a finite cell of CGAL's triangulation is strictly
+  // positively oriented by exact predicates, and doubles convert exactly.
   using Exact = CGAL::Simple_cartesian<CGAL::Exact_rational>;  // no lazy values shared across threads
   const CGAL::Cartesian_converter<K, Exact> toExact;
   const auto exact = CGAL::circumcenter(toExact(a), toExact(b), toExact(c), toExact(d));
@@ -166,6 +168,7 @@ bool DelaunayVoronoi::cellHasSample(Index id, Index sample) const {
   return false;
 }
 
+// Not thread-safe: CGAL's incident-facet walk marks the cells it visits.
 void DelaunayVoronoi::finiteIncidentFacets(Index sample, std::vector<Facet>& out) const {
   out.clear();
   dt_.finite_incident_facets(vertex_[sample], std::back_inserter(out));

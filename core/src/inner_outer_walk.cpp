@@ -21,11 +21,16 @@ Vec3 facetCentroid(const DelaunayVoronoi& dv, const SelectedFacets& sel, Index f
 // over the hull). A polygon with such a vertex is not inside the solid,
 // whatever its centroid - the mean of points 1e15 away in different
 // directions - happens to hit.
+// The box is padded by 1e-6 of its diagonal: a flat cell's circle centre on
+// a planar face of the box can fall a rounding step outside it, and is asked
+// of the classifier as before; far centres are ~1e15 away.
 bool beyondSolid(const DelaunayVoronoi& dv, const SampleSet& samples, Index cell) {
-  if (!(dv.circumradius(cell) <= 0.5 * samples.bboxDiagonal())) return true;
+  const double diagonal = samples.bboxDiagonal();
+  if (!(dv.circumradius(cell) <= 0.5 * diagonal)) return true;
   const Vec3& c = dv.circumcenter(cell);
+  const double pad = 1e-6 * diagonal;
   for (int k = 0; k < 3; ++k)
-    if (!(c[k] >= samples.bboxMin[k] && c[k] <= samples.bboxMax[k])) return true;
+    if (!(c[k] >= samples.bboxMin[k] - pad && c[k] <= samples.bboxMax[k] + pad)) return true;
   return false;
 }
 

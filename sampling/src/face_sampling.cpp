@@ -2,6 +2,7 @@
 // uniform), never a grid, kept clear of edge, corner and triplet samples.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <random>
 
 #include <BRepAdaptor_Surface.hxx>
@@ -71,13 +72,14 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
     BRepTopAdaptor_FClass2d classifier(face, 1e-9);
     std::mt19937_64 rng(seed * 1000003ull + static_cast<unsigned>(f));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    const long darts = static_cast<long>(std::min(kMaxDarts, kDartsPerDisk * area / (radius * radius)));
-    const long tiles = static_cast<long>(tilesU) * tilesV;
-    for (long t = 0; t < tiles; ++t) {
-      const long row = t / tilesU, column = row % 2 == 0 ? t % tilesU : tilesU - 1 - t % tilesU;
+    const std::int64_t darts =
+        static_cast<std::int64_t>(std::min(kMaxDarts, kDartsPerDisk * area / (radius * radius)));
+    const std::int64_t tiles = static_cast<std::int64_t>(tilesU) * tilesV;
+    for (std::int64_t t = 0; t < tiles; ++t) {
+      const std::int64_t row = t / tilesU, column = row % 2 == 0 ? t % tilesU : tilesU - 1 - t % tilesU;
       const double tu = u0 + du * static_cast<double>(column), tv = v0 + dv * static_cast<double>(row);
-      const long dartsHere = (t + 1) * darts / tiles - t * darts / tiles;
-      for (long k = 0; k < dartsHere; ++k) {
+      const std::int64_t dartsHere = (t + 1) * darts / tiles - t * darts / tiles;
+      for (std::int64_t k = 0; k < dartsHere; ++k) {
         const double u = tu + du * unit(rng), v = tv + dv * unit(rng);
         gp_Pnt p;
         gp_Vec su, sv;

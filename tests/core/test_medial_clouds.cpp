@@ -229,5 +229,5 @@ TEST(MedialClouds, WholeAxisStaysNearTheCloudDespiteSlivers) {
   for (const Vec3& v : whole.vertices) farthest = std::max({farthest, std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
   std::printf("whole axis of a jittered box cloud: %zu polygons, farthest vertex coordinate %.3g\n",
               whole.polygonCount(), farthest);
-  EXPECT_LT(farthest, 1e6);
+  EXPECT_LT(farthest, 1e3) << "a unit box's whole axis reaches ~1e2 at most; far sliver centres are ~1e15";
 }
