@@ -11,9 +11,7 @@
 
 #include <tbb/parallel_invoke.h>
 
-#include <BRepBndLib.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
-#include <Bnd_Box.hxx>
 
 #include "atomic_file.hpp"
 #include "cadmedial/brep_io.hpp"
@@ -63,14 +61,9 @@ int runRunCommand(const RunCommandOptions& options) {
 
     InsideOracle oracle;
     BRepClass3d_SolidClassifier classifier(model.solids[i]);
-    Bnd_Box solidBox;
-    if (options.checkWithOracle) BRepBndLib::Add(model.solids[i], solidBox);
     if (options.checkWithOracle)
-      oracle = [&classifier, &solidBox](const Vec3& p) {
-        // Outside the box is outside (OCCT answers IN or ON for some points ~1e15 away).
-        const gp_Pnt q(p[0], p[1], p[2]);
-        if (solidBox.IsOut(q)) return false;
-        classifier.Perform(q, 1e-9);
+      oracle = [&classifier](const Vec3& p) {
+        classifier.Perform(gp_Pnt(p[0], p[1], p[2]), 1e-9);
         return classifier.State() == TopAbs_IN;
       };
     sampled.samples.validate();

@@ -50,20 +50,19 @@ std::vector<Vec3> outwardSampleNormals(const SampleSet& s) {
   return normals;
 }
 
+bool beyondSampledSolid(const DelaunayVoronoi& dv, const SampleSet& samples, Index cell, double pad) {
+  if (!(dv.circumradius(cell) <= 0.5 * samples.bboxDiagonal())) return true;
+  const Vec3& c = dv.circumcenter(cell);
+  for (int k = 0; k < 3; ++k)
+    if (!(c[k] >= samples.bboxMin[k] - pad && c[k] <= samples.bboxMax[k] + pad)) return true;
+  return false;
+}
+
 std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const SampleSet& samples,
                                             const std::vector<Vec3>& normals, double nearTolerance,
                                             const std::vector<std::uint8_t>* wanted, bool markNearInside) {
   const std::size_t m = dv.cellCount();
   std::vector<std::uint8_t> side(m, kCellOutside);
-  // An empty ball inside the solid fits in its bounding box: centres outside
-  // the box, or radii above half its diagonal, are outside whatever else says
-  // (the far centres of flat cells on the convex hull).
-  const double halfDiagonal = 0.5 * samples.bboxDiagonal();
-  auto inBox = [&](const Vec3& c) {
-    for (int k = 0; k < 3; ++k)
-      if (!(c[k] >= samples.bboxMin[k] - nearTolerance && c[k] <= samples.bboxMax[k] + nearTolerance)) return false;
-    return true;
-  };
 
   // When the reconstruction is a closed manifold, an exact point-in-mesh test
   // (CGAL AABB tree, ray parity) decides; otherwise the tangent-plane vote.
@@ -100,8 +99,8 @@ std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const Sam
     for (std::size_t id = r.begin(); id != r.end(); ++id) {
       const Index cell = static_cast<Index>(id);
       if (dv.isInfinite(cell) || (wanted && !(*wanted)[id])) continue;
+      if (beyondSampledSolid(dv, samples, cell, nearTolerance)) continue;
       const Vec3& c = dv.circumcenter(cell);
-      if (!(dv.circumradius(cell) <= halfDiagonal) || !inBox(c)) continue;
       if (tree) {
         const Kernel::Point_3 p = mesh->permuted(c);  // distances are unchanged by the permutation
         const std::uint8_t known = groupSide[id];

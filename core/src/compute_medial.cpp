@@ -100,14 +100,6 @@ PointMedialResult computeMedial(const std::vector<Vec3>& points, const MedialPar
   watch.restart();
   InnerOuterLabels& labels = r.labels;
   labels.facetOuter.assign(selected.size(), 0);
-  std::vector<std::uint8_t> cellInside;
-  if (inner) {  // the point-in-mesh test is the costly part: only the cells read below
-    std::vector<std::uint8_t> onRing(dv.cellCount(), 0);
-    for (Index f = 0; f < selected.size(); ++f)
-      if (!selected.unbounded[f])
-        for (const Index* c = selected.ringBegin(f); c != selected.ringEnd(f); ++c) onRing[*c] = 1;
-    cellInside = classifyCellSides(dv, samples, outwardSampleNormals(samples), 0, &onRing);
-  }
   // A Voronoi vertex a million diagonals away is at infinity for any use of
   // the axis: the exact centre of a sliver of nearly coplanar samples
   // (delaunay.cpp) lies ~1e15 away. Facets through one are dropped with the
@@ -119,6 +111,14 @@ PointMedialResult computeMedial(const std::vector<Vec3>& points, const MedialPar
       if (!(dv.circumradius(*c) <= farRadius)) return true;
     return false;
   };
+  std::vector<std::uint8_t> cellInside;
+  if (inner) {  // the point-in-mesh test is the costly part: only the cells read below
+    std::vector<std::uint8_t> onRing(dv.cellCount(), 0);
+    for (Index f = 0; f < selected.size(); ++f)
+      if (!reachesInfinity(f))
+        for (const Index* c = selected.ringBegin(f); c != selected.ringEnd(f); ++c) onRing[*c] = 1;
+    cellInside = classifyCellSides(dv, samples, outwardSampleNormals(samples), 0, &onRing);
+  }
   for (Index f = 0; f < selected.size(); ++f) {
     if (reachesInfinity(f)) {
       labels.facetOuter[f] = 1;

@@ -16,24 +16,6 @@ Vec3 facetCentroid(const DelaunayVoronoi& dv, const SelectedFacets& sel, Index f
   return {c[0] / n, c[1] / n, c[2] / n};
 }
 
-// A Voronoi vertex no inner ball has: radius above half the bounding-box
-// diagonal, or centre outside the box (far centres of slivers and flat cells
-// over the hull). A polygon with such a vertex is not inside the solid,
-// whatever its centroid - the mean of points 1e15 away in different
-// directions - happens to hit.
-// The box is padded by 1e-6 of its diagonal: a flat cell's circle centre on
-// a planar face of the box can fall a rounding step outside it, and is asked
-// of the classifier as before; far centres are ~1e15 away.
-bool beyondSolid(const DelaunayVoronoi& dv, const SampleSet& samples, Index cell) {
-  const double diagonal = samples.bboxDiagonal();
-  if (!(dv.circumradius(cell) <= 0.5 * diagonal)) return true;
-  const Vec3& c = dv.circumcenter(cell);
-  const double pad = 1e-6 * diagonal;
-  for (int k = 0; k < 3; ++k)
-    if (!(c[k] >= samples.bboxMin[k] - pad && c[k] <= samples.bboxMax[k] + pad)) return true;
-  return false;
-}
-
 Vec3 forcedCentroid(const DelaunayVoronoi& dv, const SampleSet& samples, const ForcedTriangle& t) {
   Vec3 c{0, 0, 0};
   int n = 0;
@@ -172,12 +154,18 @@ InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& 
 
   if (oracle) {
     Stopwatch ow;
+    // A polygon with a vertex no inner ball has is not inside, whatever its
+    // centroid - a mean of points 1e15 away - hits. The box is padded by
+    // 1e-6 of its diagonal: a flat cell's circle centre on a planar face of
+    // the box can fall a rounding step outside it.
+    const double pad = 1e-6 * samples.bboxDiagonal();
+    auto beyondSolid = [&](Index cell) { return beyondSampledSolid(dv, samples, cell, pad); };
     for (Index f = 0; f < nf; ++f) {
       if (selected.unbounded[f]) continue;
       ++out.oracleFacetsChecked;
       bool far = false;
       for (const Index* it = selected.ringBegin(f); it != selected.ringEnd(f) && !far; ++it)
-        far = beyondSolid(dv, samples, *it);
+        far = beyondSolid(*it);
       const bool inside = !far && oracle(facetCentroid(dv, selected, f));
       const bool inner = !out.facetOuter[f];
       if (inside != inner) {
@@ -188,7 +176,7 @@ InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& 
     for (std::size_t i = 0; i < forced.triangles.size(); ++i) {
       ++out.oracleForcedChecked;
       bool far = false;
-      for (Index v : forced.triangles[i].cells) far = far || (v != kNoIndex && beyondSolid(dv, samples, v));
+      for (Index v : forced.triangles[i].cells) far = far || (v != kNoIndex && beyondSolid(v));
       const bool inside = !far && oracle(forcedCentroid(dv, samples, forced.triangles[i]));
       if (inside == (out.forcedOuter[i] != 0)) ++out.oracleForcedDisagreements;
     }

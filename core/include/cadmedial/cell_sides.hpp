@@ -22,6 +22,12 @@ enum CellSide : std::uint8_t {
   kCellNearInside = 3,   // inside but within the tolerance (only when asked for: markNearInside)
 };
 
+// True when no ball inside the solid can be this cell's empty ball: an
+// inner ball fits in the samples' bounding box, so a radius above half its
+// diagonal or a centre outside the box grown by `pad` is outside whatever
+// else says (far centres of slivers and flat cells over the hull, ~1e15 away).
+bool beyondSampledSolid(const DelaunayVoronoi& dv, const SampleSet& samples, Index cell, double pad);
+
 // Per cell id, a CellSide. With a closed, manifold reconstruction: CGAL's
 // point-in-mesh test on it, and the distance to it for centres outside.
 // Otherwise a majority vote of the tangent planes at the cell's samples,
