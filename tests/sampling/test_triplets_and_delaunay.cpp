@@ -131,3 +131,58 @@ TEST(PublicTriplets, ReportFeaturesMissingFromDelaunay) {
 
 }  // namespace
 }  // namespace cadmedial
+
+namespace cadmedial {
+namespace {
+
+// Face darts are thrown tile by tile (face_sampling.cpp): the samples must
+// still be a Poisson-disk set that fills every face - no two face samples
+// closer than their radius, and no hole much wider than a disk anywhere on a
+// face (a tile skipped or mis-placed leaves a hole ~16 radii wide). Box faces
+// of 40 x 30 mm at h = 0.3 are 4-6 tiles a side.
+TEST(FaceSamples, PoissonDiskWithoutHolesAcrossTiles) {
+  const LoadedModel model = loadModel(test::bundledPath(test::bundledModel("box")));
+  SamplingParams params;
+  params.spacing = 0.3;
+  const SolidSampling sampled = sampleSolid(model.solids.at(0), params);
+  const SampleSet& s = sampled.samples;
+  const double radius = 0.75 * params.spacing;  // Poisson radius of face samples (face spacing = h on a box)
+
+  std::vector<std::pair<K::Point_3, Index>> pts;
+  for (Index i = 0; i < s.size(); ++i) pts.emplace_back(K::Point_3(s.points[i][0], s.points[i][1], s.points[i][2]), i);
+  Dt dt(pts.begin(), pts.end());
+  // The darts are the last samples (after vertices, edges and triplet legs).
+  ASSERT_GT(sampled.report.faceSamples, 0u);
+  const Index firstDart = static_cast<Index>(s.size() - sampled.report.faceSamples);
+  double closestFacePair = 1e300;
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+    const Index a = e->first->vertex(e->second)->info(), b = e->first->vertex(e->third)->info();
+    if (a < firstDart || b < firstDart) continue;
+    closestFacePair = std::min(closestFacePair, std::sqrt(CGAL::squared_distance(pts[a].first, pts[b].first)));
+  }
+  // Probes on the six faces of the 40 x 30 x 20 box, every radius / 2.
+  const double size[3] = {40, 30, 20};
+  double widestHole = 0;
+  std::size_t probes = 0;
+  for (int axis = 0; axis < 3; ++axis)
+    for (double level : {0.0, size[axis]}) {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      for (double a = 0; a <= size[u]; a += 0.5 * radius)
+        for (double b = 0; b <= size[v]; b += 0.5 * radius) {
+          double q[3];
+          q[axis] = level;
+          q[u] = a;
+          q[v] = b;
+          const K::Point_3 p(q[0], q[1], q[2]);
+          widestHole = std::max(widestHole, std::sqrt(CGAL::squared_distance(p, dt.nearest_vertex(p)->point())));
+          ++probes;
+        }
+    }
+  std::printf("box h=0.3: %zu samples, closest face pair %.4f (radius %.4f), widest hole %.4f over %zu probes\n",
+              s.size(), closestFacePair, radius, widestHole, probes);
+  EXPECT_GE(closestFacePair, radius * (1 - 1e-9));
+  EXPECT_LE(widestHole, 2.5 * radius);
+}
+
+}  // namespace
+}  // namespace cadmedial
