@@ -1,5 +1,9 @@
 #include "cadmedial/polygon_complex.hpp"
 
+#include <utility>
+
+#include "cadmedial/unique_edges.hpp"
+
 namespace cadmedial {
 
 MedialComplex buildInnerComplex(const DelaunayVoronoi& dv, const SampleSet& samples, const SelectedFacets& selected,
@@ -59,29 +63,27 @@ MedialComplex buildInnerComplex(const DelaunayVoronoi& dv, const SampleSet& samp
 }
 
 ComplexEdges buildComplexEdges(const MedialComplex& mc) {
-  ComplexEdges ce;
-  PairTable table;
-  table.reserve(mc.polygonVertices.size() / 2 + 16);
-  ce.slotEdge.resize(mc.polygonVertices.size());
+  std::vector<std::array<Index, 2>> sides(mc.polygonVertices.size());
   for (std::size_t p = 0; p < mc.polygonCount(); ++p) {
     const Index b = mc.polygonOffsets[p], e = mc.polygonOffsets[p + 1];
-    for (Index k = b; k < e; ++k) {
-      const Index u = mc.polygonVertices[k];
-      const Index v = mc.polygonVertices[k + 1 < e ? k + 1 : b];
-      const Index id = table.insert(u, v, static_cast<Index>(ce.vertices.size()));
-      if (id == ce.vertices.size()) {
-        ce.vertices.push_back({std::min(u, v), std::max(u, v)});
-        ce.polygonCount.push_back(0);
-        ce.firstPolygon.push_back(kNoIndex);
-        ce.secondPolygon.push_back(kNoIndex);
-      }
-      ce.slotEdge[k] = id;
+    for (Index k = b; k < e; ++k) sides[k] = {mc.polygonVertices[k], mc.polygonVertices[k + 1 < e ? k + 1 : b]};
+  }
+  UniqueEdges unique = findUniqueEdges(mc.vertices.size(), sides);
+  ComplexEdges ce;
+  ce.vertices = std::move(unique.edges);
+  ce.slotEdge = std::move(unique.useEdge);
+  const std::size_t ne = ce.vertices.size();
+  ce.polygonCount.assign(ne, 0);
+  ce.firstPolygon.assign(ne, kNoIndex);
+  ce.secondPolygon.assign(ne, kNoIndex);
+  for (std::size_t p = 0; p < mc.polygonCount(); ++p)
+    for (Index k = mc.polygonOffsets[p]; k < mc.polygonOffsets[p + 1]; ++k) {
+      const Index id = ce.slotEdge[k];
       Index& count = ce.polygonCount[id];
       if (count == 0) ce.firstPolygon[id] = static_cast<Index>(p);
       else if (count == 1) ce.secondPolygon[id] = static_cast<Index>(p);
       ++count;
     }
-  }
   for (Index c : ce.polygonCount) {
     if (c == 1) ++ce.borderEdges;
     else if (c == 2) ++ce.manifoldEdges;
