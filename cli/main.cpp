@@ -1,6 +1,8 @@
 // cadmedial command line. Exit codes: see cadmedial/errors.hpp and the README.
 #include <exception>
 #include <iostream>
+#include <string>
+#include <system_error>
 
 #include <CLI/CLI.hpp>
 #include <Standard_Failure.hxx>
@@ -125,7 +127,16 @@ int main(int argc, char** argv) {
     std::cerr << "error: geometry kernel failure: " << e.GetMessageString() << "\n";
     return kExitProcessingFailed;
   } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
+    // A thread that cannot be started (EAGAIN from pthread_create: std::async
+    // says so with a system_error, TBB with this message) means no address
+    // space for its stack, i.e. a memory limit (ulimit -v, batch --max-memory).
+    const std::string what = e.what();
+    const auto* system = dynamic_cast<const std::system_error*>(&e);
+    if (what.find("pthread_create") != std::string::npos ||
+        (system && system->code() == std::errc::resource_unavailable_try_again))
+      std::cerr << "error: out of memory: cannot start a thread (" << what << ")\n";
+    else
+      std::cerr << "error: " << what << "\n";
     return kExitProcessingFailed;
   }
   return kExitUsage;

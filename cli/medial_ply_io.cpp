@@ -1,6 +1,7 @@
 #include "medial_ply_io.hpp"
 
 #include "number_text.hpp"
+#include "record_writer.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -118,11 +119,9 @@ void writeMedialPly(std::ostream& out, const MedialMesh& mesh) {
   mesh.validate();
   std::size_t faces = 0;
   for (std::size_t i = 0; i < mesh.polygonCount(); ++i) faces += piecesOf(mesh.polygonOffsets[i + 1] - mesh.polygonOffsets[i]);
-  // One string, numbers through std::to_chars (shortest text that reads back
-  // to the same double): iostream / printf formatting was most of `run`'s
-  // write time.
+  // Numbers through std::to_chars (shortest text that reads back to the same
+  // double): iostream / printf formatting was most of `run`'s write time.
   std::string text;
-  text.reserve(96 * mesh.vertices.size() + 40 * faces + 1024);
   text += "ply\nformat ascii 1.0\n"
           "comment cadmedial medial axis: radius = medial radius; provenance 0 Voronoi facet, 1 convex-edge "
           "triangle, 2 convex-edge fill, 3 corner triangle\n"
@@ -135,36 +134,36 @@ void writeMedialPly(std::ostream& out, const MedialMesh& mesh) {
   text += '\n';
   for (const char* p : kFaceProperties) (text += p) += '\n';
   text += "end_header\n";
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+  out << text;
+  writeRecords(out, mesh.vertices.size(), [&](std::size_t v, std::string& line) {
     const auto& p = mesh.vertices[v];
     for (int k = 0; k < 3; ++k) {
-      appendNumber(text, p[k]);
-      text += ' ';
+      appendNumber(line, p[k]);
+      line += ' ';
     }
-    appendNumber(text, mesh.radius[v]);
-    text += '\n';
-  }
-  for (std::size_t i = 0; i < mesh.polygonCount(); ++i) {
+    appendNumber(line, mesh.radius[v]);
+    line += '\n';
+  });
+  writeRecords(out, mesh.polygonCount(), [&](std::size_t i, std::string& line) {
     const std::uint32_t b = mesh.polygonOffsets[i], e = mesh.polygonOffsets[i + 1];
     // Pieces: corners b, then [k, k + len) for consecutive windows overlapping by one corner.
     for (std::uint32_t k = b + 1; k + 1 < e;) {
       const std::uint32_t len = std::min<std::uint32_t>(kMaxCorners - 1, e - k);
-      appendInteger(text, len + 1);
-      text += ' ';
-      appendInteger(text, mesh.polygonVertices[b]);
+      appendInteger(line, len + 1);
+      line += ' ';
+      appendInteger(line, mesh.polygonVertices[b]);
       for (std::uint32_t m = k; m < k + len; ++m) {
-        text += ' ';
-        appendInteger(text, mesh.polygonVertices[m]);
+        line += ' ';
+        appendInteger(line, mesh.polygonVertices[m]);
       }
-      text += ' ';
-      appendInteger(text, mesh.sheet[i]);
-      text += ' ';
-      appendInteger(text, static_cast<int>(mesh.provenance[i]));
-      text += '\n';
+      line += ' ';
+      appendInteger(line, mesh.sheet[i]);
+      line += ' ';
+      appendInteger(line, static_cast<int>(mesh.provenance[i]));
+      line += '\n';
       k += len - 1;
     }
-  }
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  });
 }
 
 void writeMedialPlyFile(const std::string& path, const MedialMesh& mesh) {

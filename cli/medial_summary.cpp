@@ -71,7 +71,8 @@ nlohmann::json medialSummaryJson(const SamplingReport& sampling, const MedialRes
                   {"complex", t.complex},
                   {"sheets", t.sheets},
                   {"topology", t.topology},
-                  {"medial_total", t.total}};
+                  {"medial_total", t.total},
+                  {"prepared_alongside_delaunay", t.preparedAlongside}};
   j["sampling"] = toJson(sampling);
   return j;
 }

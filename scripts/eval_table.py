@@ -56,7 +56,8 @@ def evaluate(exe, model, outdir, run_options):
         e = json.loads((solid_dir / "eval.json").read_text())
         name = model.name + ("" if solid_dir.name == "solid_0" and not (outdir / "solid_1").exists()
                              else f" [{solid_dir.name}]")
-        seconds = sum(s["seconds"].get(k, 0.0) for k in ("read", "classify", "sample", "reconstruct", "medial_total", "write"))
+        seconds = s["seconds"].get("end_to_end") or sum(
+            s["seconds"].get(k, 0.0) for k in ("read", "classify", "sample", "reconstruct", "medial_total", "write"))
         m, t, a = e["medialness"], e["topology"], e["attachment"]
         rows.append(
             f"| {name} | {s['counts']['samples']} | {seconds:.2f} | {100 * e['inside']['share']:.2f} | "

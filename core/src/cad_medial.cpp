@@ -1,3 +1,4 @@
+#include <memory>
 #include <stdexcept>
 
 #include "cadmedial/medial.hpp"
@@ -12,8 +13,30 @@ MedialResult computeCadMedial(const SampleSet& samples, const MedialParams& para
   return computeCadMedial(dv, samples, params, oracle);
 }
 
+PreparedSamples::PreparedSamples(const SampleSet& samples, bool withCellSides) {
+  Stopwatch watch;
+  umbrellas = computeUmbrellaData(samples);
+  umbrellaSeconds = watch.seconds();
+  watch.restart();
+  if (withCellSides) cellSides = std::make_unique<CellSideInputs>(samples);
+  cellSideSeconds = watch.seconds();
+}
+
 MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& samples, const MedialParams& params,
                               const InsideOracle& oracle) {
+  samples.validate();
+  // Cell sides only where the walk or the inner rule may read them.
+  const PreparedSamples prepared(samples, params.walkStaysOutside || params.innerNeedsInsideVertices);
+  MedialResult r = computeCadMedial(dv, samples, prepared, params, oracle);
+  r.times.umbrellas += prepared.umbrellaSeconds;
+  r.times.cellSides += prepared.cellSideSeconds;
+  r.times.total += prepared.umbrellaSeconds + prepared.cellSideSeconds;
+  r.times.preparedAlongside = 0;
+  return r;
+}
+
+MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& samples, const PreparedSamples& prepared,
+                              const MedialParams& params, const InsideOracle& oracle) {
   samples.validate();
   if (dv.sampleCount() != samples.size())
     throw std::invalid_argument("computeCadMedial: triangulation and SampleSet differ in size");
@@ -23,11 +46,16 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
   MedialResult r;
   r.times.delaunay = dv.delaunaySeconds();
   r.times.voronoi = dv.sideArraySeconds();
+  r.times.preparedAlongside = prepared.umbrellaSeconds + prepared.cellSideSeconds;
   Stopwatch total;
   Stopwatch watch;
 
-  UmbrellaData umbrellas = computeUmbrellaData(samples);
-  if (!params.oneSidedConcaveEdges) umbrellas.sideStart.clear();
+  std::unique_ptr<UmbrellaData> seedUmbrellas;  // the seed's two-sided test: no one-sided wedges
+  if (!params.oneSidedConcaveEdges) {
+    seedUmbrellas = std::make_unique<UmbrellaData>(prepared.umbrellas);
+    seedUmbrellas->sideStart.clear();
+  }
+  const UmbrellaData& umbrellas = seedUmbrellas ? *seedUmbrellas : prepared.umbrellas;
   r.times.umbrellas = watch.seconds();
 
   const SelectedFacets selected = selectFacetsByAngleAndRatio(dv, umbrellas, params);
@@ -48,8 +76,10 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
     for (Index c : selected.ringCells)
       if (c < onRing.size()) onRing[c] = 1;
     const double spacing = samples.spacing > 0 ? samples.spacing : samples.bboxDiagonal() / 40;
-    cellSide = classifyCellSides(dv, samples, outwardSampleNormals(samples), params.nearSurfaceFraction * spacing,
-                                 &onRing);
+    std::unique_ptr<CellSideInputs> built;
+    if (!prepared.cellSides) built = std::make_unique<CellSideInputs>(samples);
+    cellSide = classifyCellSides(dv, samples, built ? *built : *prepared.cellSides,
+                                 params.nearSurfaceFraction * spacing, &onRing);
   }
   r.times.cellSides = watch.seconds();
   r.labels = separateInnerOuter(dv, samples, selected, r.forced, params, oracle, cellSide);
@@ -72,7 +102,7 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
   r.times.sheets = watch.seconds();
 
   watch.restart();
-  r.topology = computeTopology(r, r.edges, params.bettiCoreLimit);
+  if (params.computeTopology) r.topology = computeTopology(r, r.edges, params.bettiCoreLimit);
   r.times.topology = watch.seconds();
   r.times.total = r.times.delaunay + r.times.voronoi + total.seconds() - r.times.oracle;
 

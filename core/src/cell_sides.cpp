@@ -2,6 +2,7 @@
 #include "triangle_soup_tree.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -58,17 +59,31 @@ bool beyondSampledSolid(const DelaunayVoronoi& dv, const SampleSet& samples, Ind
   return false;
 }
 
+CellSideInputs::CellSideInputs(const SampleSet& samples) : CellSideInputs(samples, outwardSampleNormals(samples)) {}
+
+CellSideInputs::CellSideInputs(const SampleSet& samples, std::vector<Vec3> sampleNormals)
+    : normals(std::move(sampleNormals)) {
+  // When the reconstruction is a closed manifold, an exact point-in-mesh test
+  // (CGAL AABB tree, ray parity) decides; otherwise the tangent-plane vote.
+  if (!samples.triangles.empty() && checkSurfaceMesh(samples.points, samples.triangles).closedManifold())
+    mesh = std::make_unique<SoupTree>(samples);
+}
+
+CellSideInputs::~CellSideInputs() = default;
+
 std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const SampleSet& samples,
                                             const std::vector<Vec3>& normals, double nearTolerance,
                                             const std::vector<std::uint8_t>* wanted, bool markNearInside) {
+  return classifyCellSides(dv, samples, CellSideInputs(samples, normals), nearTolerance, wanted, markNearInside);
+}
+
+std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const SampleSet& samples,
+                                            const CellSideInputs& inputs, double nearTolerance,
+                                            const std::vector<std::uint8_t>* wanted, bool markNearInside) {
   const std::size_t m = dv.cellCount();
   std::vector<std::uint8_t> side(m, kCellOutside);
-
-  // When the reconstruction is a closed manifold, an exact point-in-mesh test
-  // (CGAL AABB tree, ray parity) decides; otherwise the tangent-plane vote.
-  const bool closed = !samples.triangles.empty() && checkSurfaceMesh(samples.points, samples.triangles).closedManifold();
-  std::unique_ptr<SoupTree> mesh;
-  if (closed) mesh = std::make_unique<SoupTree>(samples);
+  const std::vector<Vec3>& normals = inputs.normals;
+  const SoupTree* mesh = inputs.mesh.get();
   const Tree* tree = mesh ? &mesh->tree : nullptr;
   const double nearSquared = nearTolerance * nearTolerance;
   const CGAL::Bbox_3 treeBox = tree ? tree->bbox() : CGAL::Bbox_3();

@@ -94,11 +94,11 @@ std::size_t fillSingleFacetHoles(const DelaunayVoronoi& dv, const SelectedFacets
       for (int i = 0; i < 4; ++i)
         for (int j = i + 1; j < 4; ++j) {
           if (!bothFacetsMarked(cid, i, j)) continue;
-          Index a = c->vertex(i)->info(), b = c->vertex(j)->info();
-          if (a > b) std::swap(a, b);
           // Selected edges never become holes (inner: already there; outer:
           // the walk decided).
-          if (selected.find(a, b) != kNoIndex) continue;
+          if (selected.cellEdgeSelected(cid, i, j)) continue;
+          Index a = c->vertex(i)->info(), b = c->vertex(j)->info();
+          if (a > b) std::swap(a, b);
           bool hole = true;
           auto circ = dt.incident_cells(c, i, j);
           const auto start = circ;

@@ -10,10 +10,8 @@ namespace cadmedial {
 
 namespace {
 
-constexpr int kEdgeI[6] = {0, 0, 0, 1, 1, 2};
-constexpr int kEdgeJ[6] = {1, 2, 3, 2, 3, 3};
-// Local edge index of the vertex pair (a, b) of a cell.
-constexpr int kEdgeOf[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
+constexpr const int* kEdgeI = SelectedFacets::kEdgeI;
+constexpr const int* kEdgeJ = SelectedFacets::kEdgeJ;
 
 }  // namespace
 
@@ -56,6 +54,7 @@ SelectedFacets selectFacetsByAngleAndRatio(const DelaunayVoronoi& dv, const Umbr
     }
   });
 
+  out.cellEdgeMask = selectedMask;  // phase 2 clears the bits it has done
   out.testSeconds = watch.seconds();
   // Finite edges by Euler's relation on S³ (V − E + F − C = 0 with the
   // infinite vertex, F = 2C) minus the hull vertices (2 + H/2 for H hull
@@ -83,7 +82,7 @@ SelectedFacets selectFacetsByAngleAndRatio(const DelaunayVoronoi& dv, const Umbr
         unbounded = unbounded || dv.isInfinite(cid);
         out.ringCells.push_back(cid);
         const int a = circ->index(vp), b = circ->index(vq);
-        selectedMask[cid] &= static_cast<std::uint8_t>(~(1u << kEdgeOf[a][b]));
+        selectedMask[cid] &= static_cast<std::uint8_t>(~(1u << SelectedFacets::cellEdgeBit(a, b)));
         ++circ;
       } while (circ != start);
       out.ringOffsets.push_back(static_cast<Index>(out.ringCells.size()));

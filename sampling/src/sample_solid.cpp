@@ -72,7 +72,8 @@ FeatureCounts classifyFeatures(const TopoDS_Shape& solid, double smoothAngleDeg)
   return countFeatures(topo, edges, classifyVertices(topo, edges));
 }
 
-SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& params) {
+SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& params,
+                          const PointsReady& pointsReady) {
   SolidSampling out;
   SamplingReport& report = out.report;
   SampleSet& set = out.samples;
@@ -126,16 +127,18 @@ SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& param
   report.triplets = set.triplets.size();
   report.tripletsDropped = ctx.tripletsDropped;
 
+  if (pointsReady) pointsReady(set.points);
+
   t = Clock::now();
   const ReconstructionReport rec = reconstructFaces(ctx, set);
   set.buildUmbrellas();
+  report.surface = checkSurfaceMesh(set.points, set.triangles);
+  report.secondsReconstruct = secondsSince(t);
   report.facesFailed = rec.facesFailed;
   report.orphanSamples = rec.orphanSamples;
   report.droppedTriangles = rec.droppedTriangles;
   report.worstFaceAreaError = rec.worstFaceAreaError;
   report.worstFace = rec.worstFace;
-  report.surface = checkSurfaceMesh(set.points, set.triangles);
-  report.secondsReconstruct = secondsSince(t);
 
   GProp_GProps volume, area;
   BRepGProp::VolumeProperties(solid, volume);

@@ -4,12 +4,17 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "cadmedial/delaunay.hpp"
 #include "cadmedial/sample_set.hpp"
 
 namespace cadmedial {
+
+namespace soup {
+struct SoupTree;
+}
 
 // Per sample: area-weighted outward normal of its umbrella (zero if none).
 std::vector<Vec3> outwardSampleNormals(const SampleSet& samples);
@@ -42,6 +47,27 @@ bool beyondSampledSolid(const DelaunayVoronoi& dv, const SampleSet& samples, Ind
 // cells on selected facets' rings, and the point-in-mesh test is the costly part.
 std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const SampleSet& samples,
                                             const std::vector<Vec3>& normals, double nearTolerance = 0,
+                                            const std::vector<std::uint8_t>* wanted = nullptr,
+                                            bool markNearInside = false);
+
+// What classifyCellSides needs from the samples alone: the outward normals
+// and, when the reconstruction is a closed manifold, its point-in-mesh tree
+// (the surface check and the tree build are ~2 s at 10^6 samples). It needs
+// no triangulation, so a caller can build it while the Delaunay runs.
+struct CellSideInputs {
+  explicit CellSideInputs(const SampleSet& samples);
+  CellSideInputs(const SampleSet& samples, std::vector<Vec3> normals);
+  ~CellSideInputs();
+  CellSideInputs(const CellSideInputs&) = delete;
+  CellSideInputs& operator=(const CellSideInputs&) = delete;
+
+  std::vector<Vec3> normals;              // outwardSampleNormals
+  std::unique_ptr<soup::SoupTree> mesh;   // null unless the reconstruction is closed and manifold
+};
+
+// The same, on inputs built beforehand from the same samples.
+std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const SampleSet& samples,
+                                            const CellSideInputs& inputs, double nearTolerance = 0,
                                             const std::vector<std::uint8_t>* wanted = nullptr,
                                             bool markNearInside = false);
 

@@ -47,6 +47,10 @@ struct SelectedFacets {
   std::vector<Index> ringCells;
   std::vector<std::uint8_t> unbounded;  // 1 if an infinite cell is on the ring
   PairTable lookup;                     // {p,q} -> facet id
+  // Per cell id, bit cellEdgeBit(i, j): the Delaunay edge between the cell's
+  // local vertices i and j is selected (0 for infinite cells). The same
+  // answer as find() without a hash lookup, for passes over cells.
+  std::vector<std::uint8_t> cellEdgeMask;
 
   std::size_t finiteEdges = 0;          // Delaunay edges examined
   std::size_t unboundedCount = 0;
@@ -58,6 +62,15 @@ struct SelectedFacets {
   Index ringSize(Index f) const { return ringOffsets[f + 1] - ringOffsets[f]; }
   const Index* ringBegin(Index f) const { return ringCells.data() + ringOffsets[f]; }
   const Index* ringEnd(Index f) const { return ringCells.data() + ringOffsets[f + 1]; }
+  bool cellEdgeSelected(Index cell, int i, int j) const { return cellEdgeMask[cell] >> cellEdgeBit(i, j) & 1u; }
+
+  // Local edges of a cell: edge e joins local vertices kEdgeI[e] and kEdgeJ[e].
+  static constexpr int kEdgeI[6] = {0, 0, 0, 1, 1, 2};
+  static constexpr int kEdgeJ[6] = {1, 2, 3, 2, 3, 3};
+  static constexpr int cellEdgeBit(int i, int j) {
+    constexpr int kEdgeOf[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
+    return kEdgeOf[i][j];
+  }
 };
 
 SelectedFacets selectFacetsByAngleAndRatio(const DelaunayVoronoi& dv, const UmbrellaData& umbrellas,

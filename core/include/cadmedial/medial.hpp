@@ -12,6 +12,9 @@
 //   polygon_complex.hpp  buildInnerComplex, segmentSheets, computeTopology (§4.6)
 #pragma once
 
+#include <memory>
+
+#include "cadmedial/cell_sides.hpp"
 #include "cadmedial/delaunay.hpp"
 #include "cadmedial/facet_selection.hpp"
 #include "cadmedial/forced_triangles.hpp"
@@ -67,6 +70,7 @@ struct MedialTimes {  // seconds
   double sheets = 0;
   double topology = 0;
   double total = 0;        // the whole pipeline incl. Delaunay, without the oracle
+  double preparedAlongside = 0;  // PreparedSamples built while the Delaunay ran (not in total)
 };
 
 struct MedialResult : MedialComplex {
@@ -87,6 +91,21 @@ MedialResult computeCadMedial(const SampleSet& samples, const MedialParams& para
 // Same on a triangulation already built from samples.points (reuse it for the
 // pair-mesh).
 MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& samples,
+                              const MedialParams& params = MedialParams::cad(), const InsideOracle& oracle = {});
+
+// The pipeline's work on the samples alone (umbrella data, cell-side inputs,
+// ~2.5 s at 10^6 samples): it needs no triangulation, so a caller with a
+// second core builds it while the Delaunay runs and passes it in.
+struct PreparedSamples {
+  explicit PreparedSamples(const SampleSet& samples, bool withCellSides = true);
+  UmbrellaData umbrellas;
+  std::unique_ptr<CellSideInputs> cellSides;  // null: built when needed
+  double umbrellaSeconds = 0, cellSideSeconds = 0;
+};
+
+// Same with the samples' part prepared beforehand from the same samples; its
+// time is reported as times.preparedAlongside, not in the stages or total.
+MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& samples, const PreparedSamples& prepared,
                               const MedialParams& params = MedialParams::cad(), const InsideOracle& oracle = {});
 
 }  // namespace cadmedial

@@ -54,6 +54,10 @@ struct MedialParams {
   // Compute β2 (and so β1) exactly only while the 2-core left after free-face
   // collapses has at most this many polygons; otherwise β1 = β2 = -1.
   std::size_t bettiCoreLimit = 200000;
+  // computeCadMedial ends with computeTopology (β numbers of the result, a
+  // diagnostic). False leaves MedialResult::topology empty for the caller to
+  // compute, e.g. while the outputs are written (the CLI does).
+  bool computeTopology = true;
 
   // Defaults of seed 002 (CAD samples): θ = 5°, ρ = 8.
   static MedialParams cad() { return MedialParams{}; }

@@ -1,6 +1,7 @@
 // Sampling a B-rep solid for CAD_MEDIAL (DESIGN.md §3, seed 002 §4.2.1/§4.2.4).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -48,9 +49,17 @@ struct SolidSampling {
 // A spacing that gives a usable axis on typical parts in about a second.
 double defaultSpacing(const TopoDS_Shape& solid);
 
+// Called once with the final sample points, before the faces are
+// reconstructed: a caller starts work that needs only the points (the
+// Delaunay triangulation) on another thread, so that on two cores the
+// reconstruction costs no wall time. The reference is valid only during the
+// call: copy what outlives it.
+using PointsReady = std::function<void(const std::vector<Vec3>& points)>;
+
 // Samples one closed solid. Throws std::runtime_error if the solid cannot be
 // sampled at all; partial problems are counted in the report.
-SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& params = {});
+SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& params = {},
+                          const PointsReady& pointsReady = {});
 
 // Classifies the edges and vertices of a solid as it is (no face splitting):
 // the counts a CAD user sees. Seams and degenerate edges are counted apart.
