@@ -76,7 +76,9 @@ int runRunCommand(const RunCommandOptions& options) {
     });
     if (!triangulation.valid()) throw std::logic_error("sampling did not hand over its points");
     sampled.samples.validate();
-    const PreparedSamples prepared(sampled.samples);
+    MedialParams params = options.params;
+    params.computeTopology = false;  // below, while the files are written
+    const PreparedSamples prepared(sampled.samples, params.mayReadCellSides());
     const std::unique_ptr<DelaunayVoronoi> triangulated = triangulation.get();
     const DelaunayVoronoi& dv = *triangulated;
 
@@ -87,8 +89,6 @@ int runRunCommand(const RunCommandOptions& options) {
         classifier.Perform(gp_Pnt(p[0], p[1], p[2]), 1e-9);
         return classifier.State() == TopAbs_IN;
       };
-    MedialParams params = options.params;
-    params.computeTopology = false;  // below, while the files are written
     MedialResult medial = computeCadMedial(dv, sampled.samples, prepared, params, oracle);
 
     t = Clock::now();

@@ -26,7 +26,7 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
                               const InsideOracle& oracle) {
   samples.validate();
   // Cell sides only where the walk or the inner rule may read them.
-  const PreparedSamples prepared(samples, params.walkStaysOutside || params.innerNeedsInsideVertices);
+  const PreparedSamples prepared(samples, params.mayReadCellSides());
   MedialResult r = computeCadMedial(dv, samples, prepared, params, oracle);
   r.times.umbrellas += prepared.umbrellaSeconds;
   r.times.cellSides += prepared.cellSideSeconds;

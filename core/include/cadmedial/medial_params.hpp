@@ -59,6 +59,9 @@ struct MedialParams {
   // compute, e.g. while the outputs are written (the CLI does).
   bool computeTopology = true;
 
+  // The walk or the inner rule may read the cell sides (classifyCellSides).
+  bool mayReadCellSides() const { return walkStaysOutside || innerNeedsInsideVertices; }
+
   // Defaults of seed 002 (CAD samples): θ = 5°, ρ = 8.
   static MedialParams cad() { return MedialParams{}; }
   // Defaults of seed 000 (point clouds): θ = π/8, ρ = 8.
