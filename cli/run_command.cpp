@@ -8,10 +8,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <future>
-#include <memory>
-#include <stdexcept>
-#include <system_error>
 
 #include <tbb/parallel_invoke.h>
 
@@ -20,6 +16,7 @@
 #include "atomic_file.hpp"
 #include "cadmedial/brep_io.hpp"
 #include "cadmedial/errors.hpp"
+#include "cadmedial/sample_and_triangulate.hpp"
 #include "cadmedial/sampling.hpp"
 #include "medial_outputs.hpp"
 #include "pair_mesh_stage.hpp"
@@ -62,25 +59,11 @@ int runRunCommand(const RunCommandOptions& options) {
     SamplingParams sampling;
     sampling.spacing = options.spacing;
     const auto solidStart = Clock::now();
-    // The Delaunay triangulation needs only the points: it runs on its own
-    // thread while the faces are reconstructed and the samples' part of the
-    // pipeline is prepared (on two cores that work then costs no wall time).
-    std::future<std::unique_ptr<DelaunayVoronoi>> triangulation;
-    const SolidSampling sampled = sampleSolid(model.solids[i], sampling, [&](const std::vector<Vec3>& points) {
-      auto triangulate = [points] { return std::make_unique<DelaunayVoronoi>(points); };
-      try {
-        triangulation = std::async(std::launch::async, triangulate);
-      } catch (const std::system_error&) {  // no thread to spare (a memory limit): triangulate when asked
-        triangulation = std::async(std::launch::deferred, triangulate);
-      }
-    });
-    if (!triangulation.valid()) throw std::logic_error("sampling did not hand over its points");
-    sampled.samples.validate();
     MedialParams params = options.params;
     params.computeTopology = false;  // below, while the files are written
-    const PreparedSamples prepared(sampled.samples, params.mayReadCellSides());
-    const std::unique_ptr<DelaunayVoronoi> triangulated = triangulation.get();
-    const DelaunayVoronoi& dv = *triangulated;
+    const TriangulatedSamples run = sampleAndTriangulate(model.solids[i], sampling, params.mayReadCellSides());
+    const SolidSampling& sampled = run.sampled;
+    const DelaunayVoronoi& dv = *run.triangulation;
 
     InsideOracle oracle;
     BRepClass3d_SolidClassifier classifier(model.solids[i]);
@@ -89,7 +72,7 @@ int runRunCommand(const RunCommandOptions& options) {
         classifier.Perform(gp_Pnt(p[0], p[1], p[2]), 1e-9);
         return classifier.State() == TopAbs_IN;
       };
-    MedialResult medial = computeCadMedial(dv, sampled.samples, prepared, params, oracle);
+    MedialResult medial = computeCadMedial(dv, sampled.samples, *run.prepared, params, oracle);
 
     t = Clock::now();
     const std::string dir = (std::filesystem::path(options.outDir) / ("solid_" + std::to_string(i))).string();
