@@ -54,6 +54,7 @@ nlohmann::json medialSummaryJson(const SamplingReport& sampling, const MedialRes
                       {"single_facet_holes_filled", c.singleFacetHolesFilled},
                       {"sub_resolution_islands", c.subResolutionIslands},
                       {"sub_resolution_island_polygons", c.subResolutionIslandPolygons},
+                      {"point_islands_dropped", c.pointIslands},
                       {"walk_oracle_checked", c.oracleChecked},
                       {"walk_oracle_disagreements", c.oracleDisagreements}};
   j["seconds"] = {{"classify", sampling.secondsClassify},

@@ -48,6 +48,8 @@ nlohmann::json toJson(const SamplingReport& r) {
            {{"faces_failed", r.facesFailed},
             {"orphan_samples", r.orphanSamples},
             {"dropped_triangles", r.droppedTriangles},
+            {"flipped_edges", r.flippedEdges},
+            {"misaligned_triangles", r.misalignedTriangles},
             {"worst_face_area_error", r.worstFaceAreaError},
             {"worst_face", r.worstFace},
             {"surface", toJson(r.surface)},

@@ -89,6 +89,8 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
   watch.restart();
   static_cast<MedialComplex&>(r) = buildInnerComplex(dv, samples, selected, r.forced, r.labels);
   if (params.fillSingleFacetHoles) r.counts.singleFacetHolesFilled = fillSingleFacetHoles(dv, selected, r);
+  if (params.dropPointIslands)
+    r.counts.pointIslands = dropPointIslands(r, 1e-9 * samples.bboxDiagonal(), nullptr);
   if (params.islandRadiusFraction > 0) {
     const double spacing = samples.spacing > 0 ? samples.spacing : samples.bboxDiagonal() / 40;
     r.counts.subResolutionIslands =

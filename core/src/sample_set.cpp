@@ -47,6 +47,7 @@ void SampleSet::validate() const {
     for (Index v : t) checkIndex(v, "triangle");
   if (triangleFace.size() != triangles.size()) fail("triangleFace size");
   if (!triangleDeviation.empty() && triangleDeviation.size() != triangles.size()) fail("triangleDeviation size");
+  if (!triangleOffSurface.empty() && triangleOffSurface.size() != triangles.size()) fail("triangleOffSurface size");
   if (!umbrellaOffsets.empty() && umbrellaOffsets.size() != n + 1) fail("umbrellaOffsets size");
 }
 

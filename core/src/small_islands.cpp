@@ -1,57 +1,44 @@
 #include <algorithm>
+#include <array>
 
 #include "cadmedial/polygon_complex.hpp"
 #include "cadmedial/union_find.hpp"
 
 namespace cadmedial {
 
-// Why: the inner medial axis of a connected solid is connected (it is
-// homotopy equivalent to the solid), so every component but one is an
-// artefact. Those we see on CAD parts hang on features far thinner than the
-// sample spacing h, e.g. the zero-angle cusp where a concave cylinder meets a
-// plane tangentially (lever: seven islands of ≤ 72 polygons, radii ≤ 1.9
-// with h = 8.9): the convex-edge completion attaches sheets to the cusp's
-// edge samples that the sampling cannot join to the rest. A component all of
-// whose balls are below a fraction of h is dropped; a component with any
-// larger ball is kept, so a real piece of axis cut off by a coarse region is
-// reported (β0) rather than hidden, and the largest component is never
-// dropped (a thin part whose whole axis is small stays).
-// A component with a forced triangle (convex-edge or corner completion) is
-// kept too: it is the only attachment of its edge or corner, and dropping
-// those cost the lever 0.8 % of convex-edge length, 2 of 54 corners and
-// 0.05 % coverage (measured with scripts/eval_table.py --public).
-std::size_t dropSubResolutionIslands(MedialComplex& mc, double minRadius, std::size_t* polygonsRemoved) {
+namespace {
+
+// Connected components of a complex's vertices (joined through polygons)
+// and what the island rules ask about each: indexed by the root vertex.
+struct Components {
+  explicit Components(const MedialComplex& mc) : uf(mc.vertices.size()) {
+    const std::size_t nv = mc.vertices.size(), nf = mc.polygonCount();
+    for (std::size_t p = 0; p < nf; ++p)
+      for (Index k = mc.polygonOffsets[p] + 1; k < mc.polygonOffsets[p + 1]; ++k)
+        uf.unite(mc.polygonVertices[mc.polygonOffsets[p]], mc.polygonVertices[k]);
+    root.resize(nv);
+    for (std::size_t v = 0; v < nv; ++v) root[v] = uf.find(static_cast<Index>(v));
+    // The component with the most polygons is never dropped (not the one with
+    // the largest ball: the bottle's whole wall axis has r <= 0.38 < 0.25 h,
+    // and its largest ball sat on a 4-polygon island).
+    std::vector<Index> polygonsOf(nv, 0);
+    for (std::size_t p = 0; p < nf; ++p) ++polygonsOf[root[mc.polygonVertices[mc.polygonOffsets[p]]]];
+    keepRoot = static_cast<Index>(std::max_element(polygonsOf.begin(), polygonsOf.end()) - polygonsOf.begin());
+  }
+  UnionFind uf;
+  std::vector<Index> root;  // per vertex
+  Index keepRoot = 0;
+};
+
+// Removes the polygons of the components whose root has drop[root] != 0 and
+// the vertices no polygon uses any more; returns how many components.
+std::size_t removeComponents(MedialComplex& mc, const Components& comps, const std::vector<std::uint8_t>& dropRoot,
+                             std::size_t* polygonsRemoved) {
   if (polygonsRemoved) *polygonsRemoved = 0;
   const std::size_t nv = mc.vertices.size(), nf = mc.polygonCount();
-  if (nv == 0 || nf == 0) return 0;
-  UnionFind uf(nv);
-  for (std::size_t p = 0; p < nf; ++p)
-    for (Index k = mc.polygonOffsets[p] + 1; k < mc.polygonOffsets[p + 1]; ++k)
-      uf.unite(mc.polygonVertices[mc.polygonOffsets[p]], mc.polygonVertices[k]);
-  std::vector<double> maxRadius(nv, -1.0);
-  for (std::size_t v = 0; v < nv; ++v) {
-    const Index root = uf.find(static_cast<Index>(v));
-    maxRadius[root] = std::max(maxRadius[root], mc.radius[v]);
-  }
-  // The component with the most polygons is never dropped (not the one with
-  // the largest ball: the bottle's whole wall axis has r <= 0.38 < 0.25 h,
-  // and its largest ball sat on a 4-polygon island).
-  std::vector<Index> polygonsOf(nv, 0);
-  for (std::size_t p = 0; p < nf; ++p) ++polygonsOf[uf.find(mc.polygonVertices[mc.polygonOffsets[p]])];
-  const Index keepRoot =
-      static_cast<Index>(std::max_element(polygonsOf.begin(), polygonsOf.end()) - polygonsOf.begin());
-  std::vector<std::uint8_t> attached(nv, 0);
-  for (std::size_t p = 0; p < nf; ++p)
-    if (mc.provenance[p] != PolygonProvenance::DelaunayEdgeFacet)
-      attached[uf.find(mc.polygonVertices[mc.polygonOffsets[p]])] = 1;
-  std::vector<std::uint8_t> drop(nv, 0);
   std::size_t islands = 0;
-  for (std::size_t v = 0; v < nv; ++v) {
-    const Index root = uf.find(static_cast<Index>(v));
-    if (root == keepRoot || attached[root] || maxRadius[root] >= minRadius) continue;
-    drop[v] = 1;
-    if (root == static_cast<Index>(v)) ++islands;
-  }
+  for (std::size_t v = 0; v < nv; ++v)
+    if (comps.root[v] == static_cast<Index>(v) && dropRoot[v]) ++islands;
   if (islands == 0) return 0;
 
   // Compact: keep the polygons outside dropped components, renumber vertices.
@@ -60,7 +47,7 @@ std::size_t dropSubResolutionIslands(MedialComplex& mc, double minRadius, std::s
   std::vector<Index> newIndex(nv, kNoIndex);
   for (std::size_t p = 0; p < nf; ++p) {
     const Index b = mc.polygonOffsets[p], e = mc.polygonOffsets[p + 1];
-    if (drop[mc.polygonVertices[b]]) {
+    if (dropRoot[comps.root[mc.polygonVertices[b]]]) {
       if (polygonsRemoved) ++*polygonsRemoved;
       continue;
     }
@@ -82,6 +69,68 @@ std::size_t dropSubResolutionIslands(MedialComplex& mc, double minRadius, std::s
   out.sheet.assign(out.polygonCount(), kNoIndex);
   mc = std::move(out);
   return islands;
+}
+
+}  // namespace
+
+// Why: the inner medial axis of a connected solid is connected (it is
+// homotopy equivalent to the solid), so every component but one is an
+// artefact. Those we see on CAD parts hang on features far thinner than the
+// sample spacing h, e.g. the zero-angle cusp where a concave cylinder meets a
+// plane tangentially (lever: seven islands of ≤ 72 polygons, radii ≤ 1.9
+// with h = 8.9): the convex-edge completion attaches sheets to the cusp's
+// edge samples that the sampling cannot join to the rest. A component all of
+// whose balls are below a fraction of h is dropped; a component with any
+// larger ball is kept, so a real piece of axis cut off by a coarse region is
+// reported (β0) rather than hidden, and the largest component is never
+// dropped (a thin part whose whole axis is small stays).
+// A component with a forced triangle (convex-edge or corner completion) is
+// kept too: it is the only attachment of its edge or corner, and dropping
+// those cost the lever 0.8 % of convex-edge length, 2 of 54 corners and
+// 0.05 % coverage (measured with scripts/eval_table.py --public).
+std::size_t dropSubResolutionIslands(MedialComplex& mc, double minRadius, std::size_t* polygonsRemoved) {
+  if (polygonsRemoved) *polygonsRemoved = 0;
+  const std::size_t nv = mc.vertices.size();
+  if (nv == 0 || mc.polygonCount() == 0) return 0;
+  const Components comps(mc);
+  std::vector<double> maxRadius(nv, -1.0);
+  for (std::size_t v = 0; v < nv; ++v) maxRadius[comps.root[v]] = std::max(maxRadius[comps.root[v]], mc.radius[v]);
+  std::vector<std::uint8_t> attached(nv, 0);
+  for (std::size_t p = 0; p < mc.polygonCount(); ++p)
+    if (mc.provenance[p] != PolygonProvenance::DelaunayEdgeFacet)
+      attached[comps.root[mc.polygonVertices[mc.polygonOffsets[p]]]] = 1;
+  std::vector<std::uint8_t> drop(nv, 0);
+  for (std::size_t v = 0; v < nv; ++v)
+    drop[v] = comps.root[v] == static_cast<Index>(v) && v != comps.keepRoot && !attached[v] && maxRadius[v] < minRadius;
+  return removeComponents(mc, comps, drop, polygonsRemoved);
+}
+
+// Why: samples on a sphere are cospherical, so every Delaunay cell of four of
+// them has the sphere's centre as circumcenter, and the Voronoi facet between
+// two of them can have all its vertices there: a polygon of zero size. When
+// no other inner polygon uses those cells, it is a component of its own
+// (a box with all edges filleted: its corner spheres gave β0 = 2). Such a
+// component is one point, so it adds nothing to the axis but a wrong β0.
+std::size_t dropPointIslands(MedialComplex& mc, double tolerance, std::size_t* polygonsRemoved) {
+  if (polygonsRemoved) *polygonsRemoved = 0;
+  const std::size_t nv = mc.vertices.size();
+  if (nv == 0 || mc.polygonCount() == 0) return 0;
+  const Components comps(mc);
+  std::vector<std::array<double, 6>> box(nv, {1e300, 1e300, 1e300, -1e300, -1e300, -1e300});
+  for (std::size_t v = 0; v < nv; ++v) {
+    auto& b = box[comps.root[v]];
+    for (int k = 0; k < 3; ++k) {
+      b[k] = std::min(b[k], mc.vertices[v][k]);
+      b[k + 3] = std::max(b[k + 3], mc.vertices[v][k]);
+    }
+  }
+  std::vector<std::uint8_t> drop(nv, 0);
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (comps.root[v] != static_cast<Index>(v) || v == comps.keepRoot) continue;
+    const auto& b = box[v];
+    drop[v] = std::max({b[3] - b[0], b[4] - b[1], b[5] - b[2]}) <= tolerance;
+  }
+  return removeComponents(mc, comps, drop, polygonsRemoved);
 }
 
 }  // namespace cadmedial

@@ -51,15 +51,17 @@ std::vector<std::uint8_t> concaveEdgeSamples(const SampleSet& samples) {
 
 UmbrellaData computeUmbrellaData(const SampleSet& samples) {
   const std::vector<std::uint8_t> oneSided = concaveEdgeSamples(samples);
+  const std::vector<std::uint8_t>* offSurface =
+      samples.triangleOffSurface.size() == samples.triangles.size() ? &samples.triangleOffSurface : nullptr;
   if (samples.umbrellaOffsets.size() == samples.size() + 1)
     return umbrellaDataFromTriangles(samples.points, samples.triangles, samples.umbrellaOffsets,
-                                     samples.umbrellaTriangles, &oneSided);
+                                     samples.umbrellaTriangles, &oneSided, offSurface);
   SampleSet rebuilt;
   rebuilt.points = samples.points;
   rebuilt.triangles = samples.triangles;
   rebuilt.buildUmbrellas();
   return umbrellaDataFromTriangles(samples.points, samples.triangles, rebuilt.umbrellaOffsets,
-                                   rebuilt.umbrellaTriangles, &oneSided);
+                                   rebuilt.umbrellaTriangles, &oneSided, offSurface);
 }
 
 // Why one-sided umbrellas: at a sample inside a concave edge the umbrella
@@ -92,7 +94,8 @@ bool headsOverWedge(const std::array<std::array<double, 3>, 2>& wedge, const std
 
 UmbrellaData umbrellaDataFromTriangles(const std::vector<Vec3>& points, const std::vector<std::array<Index, 3>>& triangles,
                                        const std::vector<Index>& offsets, const std::vector<Index>& members,
-                                       const std::vector<std::uint8_t>* oneSided) {
+                                       const std::vector<std::uint8_t>* oneSided,
+                                       const std::vector<std::uint8_t>* offSurface) {
   const std::size_t n = offsets.empty() ? 0 : offsets.size() - 1;
   const std::size_t tcount = triangles.size();
   std::vector<TriangleData> tri(tcount);
@@ -105,6 +108,9 @@ UmbrellaData umbrellaDataFromTriangles(const std::vector<Vec3>& points, const st
 
   UmbrellaData u;
   for (const auto& t : tri) u.degenerateTriangles += t.valid ? 0 : 1;
+  if (offSurface && offSurface->size() == tcount)
+    for (std::size_t t = 0; t < tcount; ++t)
+      if ((*offSurface)[t]) tri[t].valid = false;
   u.offsets.assign(n + 1, 0);
   u.maxCircumradius.assign(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {

@@ -145,11 +145,97 @@ double faceTolerance(const TopoDS_Face& face) {
   return tolerance;
 }
 
+constexpr double kOffSurfaceCos = 0.70710678;  // cos 45°: a triangle this far off the surface normal is wrong
+
+// How well a UV triangle (counter-clockwise in the plane) follows the face:
+// the cosine between its 3D normal and the exact surface normal Su x Sv at its
+// UV centroid. Both are in the UV orientation, so the face's orientation
+// cancels. 1 when the surface normal is undefined there (no verdict), 0 for a
+// triangle without area in 3D. The vertices' sample ids must be set.
+double alignmentWithSurface(const BRepAdaptor_Surface& surf, const SampleSet& set, double su, double sv,
+                            Cdt::Vertex_handle a, Cdt::Vertex_handle b, Cdt::Vertex_handle c) {
+  const Vec3 &pa = set.points[a->info().id], &pb = set.points[b->info().id], &pc = set.points[c->info().id];
+  const gp_Vec n3 = gp_Vec(pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2])
+                        .Crossed(gp_Vec(pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]));
+  const double u = (a->point().x() + b->point().x() + c->point().x()) / (3 * su);
+  const double v = (a->point().y() + b->point().y() + c->point().y()) / (3 * sv);
+  gp_Pnt p;
+  gp_Vec du, dv;
+  surf.D1(u, v, p, du, dv);
+  const gp_Vec ns = du.Crossed(dv);
+  const double lengths = n3.Magnitude() * ns.Magnitude();
+  if (ns.Magnitude() <= 1e-12 * du.Magnitude() * dv.Magnitude() || ns.Magnitude() == 0) return 1.0;
+  return lengths > 0 ? n3.Dot(ns) / lengths : 0.0;
+}
+
+// A triangle that is fine in UV can stand on edge in space. At the pole of a
+// degenerate edge, one 3D point is a whole UV segment: the triangle from one
+// end of it to the next two samples of the edge leaving the other end has
+// three points of one edge curve (bottle.brep, fillet corners: its normal was
+// horizontal on a nearly horizontal surface). In the umbrella of those
+// samples such a normal makes the Angle condition reject the edges straight
+// across a thin wall, which leaves holes in the wall's medial sheet. Flip a
+// free edge of a triangle more than 45° off the surface when both new
+// triangles are convex in UV, have three distinct samples, and the worse of
+// the two follows the surface better than the worse of the old two.
+// Returns the number of edges flipped.
+int flipTrianglesOffTheSurface(Cdt& cdt, const BRepAdaptor_Surface& surf, const SampleSet& set,
+                                               double su, double sv) {
+  constexpr int kPasses = 8;
+  auto distinct = [](Cdt::Vertex_handle a, Cdt::Vertex_handle b, Cdt::Vertex_handle c) {
+    const Index x = a->info().id, y = b->info().id, z = c->info().id;
+    return x != kNoIndex && y != kNoIndex && z != kNoIndex && x != y && y != z && x != z;
+  };
+  auto alignment = [&](Cdt::Face_handle f) {
+    return distinct(f->vertex(0), f->vertex(1), f->vertex(2))
+               ? alignmentWithSurface(surf, set, su, sv, f->vertex(0), f->vertex(1), f->vertex(2))
+               : 1.0;  // pole triangles are dropped later
+  };
+  int flips = 0;
+  for (int pass = 0; pass < kPasses; ++pass) {
+    int flipsThisPass = 0;
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+      if (!f->info().inDomain()) continue;
+      const double here = alignment(f);
+      if (here >= kOffSurfaceCos) continue;
+      int bestEdge = -1;
+      double best = -2;
+      for (int i = 0; i < 3; ++i) {
+        if (f->is_constrained(i)) continue;
+        const Cdt::Face_handle g = f->neighbor(i);
+        if (cdt.is_infinite(g) || !g->info().inDomain()) continue;
+        const auto a = f->vertex(i), b = f->vertex(Cdt::ccw(i)), c = f->vertex(Cdt::cw(i));
+        const auto d = g->vertex(cdt.mirror_index(f, i));
+        if (!distinct(a, b, d) || !distinct(a, d, c)) continue;
+        if (CGAL::orientation(a->point(), b->point(), d->point()) != CGAL::LEFT_TURN ||
+            CGAL::orientation(a->point(), d->point(), c->point()) != CGAL::LEFT_TURN)
+          continue;
+        const double before = std::min(here, alignment(g));
+        const double after = std::min(alignmentWithSurface(surf, set, su, sv, a, b, d),
+                                      alignmentWithSurface(surf, set, su, sv, a, d, c));
+        if (after > before + 1e-9 && after > best) {
+          best = after;
+          bestEdge = i;
+        }
+      }
+      if (bestEdge < 0) continue;
+      Cdt::Face_handle flipped = f;
+      cdt.flip(flipped, bestEdge);  // both faces keep their (equal) nesting
+      ++flipsThisPass;
+    }
+    flips += flipsThisPass;
+    if (flipsThisPass == 0) break;
+  }
+  return flips;
+}
+
 // One face's triangles (already oriented outward) or the reason it failed.
 struct FaceMesh {
   std::vector<std::array<Index, 3>> triangles;
   std::vector<double> deviation;  // per triangle, SampleSet::triangleDeviation
   int droppedTriangles = 0;
+  int flippedEdges = 0;         // flipTrianglesOffTheSurface
+  std::vector<std::uint8_t> offSurface;  // per triangle, SampleSet::triangleOffSurface
   double areaError = 0;  // |mesh area / exact area - 1|
   std::string problem;   // empty on success
 };
@@ -231,6 +317,7 @@ FaceMesh reconstructFace(const SamplingContext& ctx, const SampleSet& set, int f
       if (vh->info().id == kNoIndex) vh->info().id = interior[k];
     }
     markDomains(cdt);
+    out.flippedEdges = flipTrianglesOffTheSurface(cdt, surf, set, su, sv);
     const double tolerance = faceTolerance(face);
     // Bound on |S(uv) - T(uv)| over the UV triangle (SampleSet::triangleDeviation).
     // The error is e = S - T, linear in the vertex errors (samples off the
@@ -288,8 +375,11 @@ FaceMesh reconstructFace(const SamplingContext& ctx, const SampleSet& set, int f
         poles.emplace_back(tri[0] == tri[1] || tri[0] == tri[2] ? tri[0] : tri[1], deviationOf(fh));
         continue;
       }
+      const bool offSurface =
+          alignmentWithSurface(surf, set, su, sv, fh->vertex(0), fh->vertex(1), fh->vertex(2)) < kOffSurfaceCos;
       if (face.Orientation() == TopAbs_REVERSED) std::swap(tri[1], tri[2]);
       out.triangles.push_back(tri);
+      out.offSurface.push_back(offSurface ? 1 : 0);
       out.deviation.push_back(deviationOf(fh));
       meshArea += triangleArea(set.points[tri[0]], set.points[tri[1]], set.points[tri[2]]);
     }
@@ -303,10 +393,12 @@ FaceMesh reconstructFace(const SamplingContext& ctx, const SampleSet& set, int f
   } catch (const std::exception& e) {
     out.triangles.clear();
     out.deviation.clear();
+    out.offSurface.clear();
     out.problem = e.what();
   } catch (const Standard_Failure& e) {
     out.triangles.clear();
     out.deviation.clear();
+    out.offSurface.clear();
     out.problem = e.GetMessageString();
   }
   return out;
@@ -335,6 +427,9 @@ ReconstructionReport reconstructFaces(SamplingContext& ctx, SampleSet& set) {
       continue;
     }
     report.droppedTriangles += m.droppedTriangles;
+    report.flippedEdges += m.flippedEdges;
+    report.misalignedTriangles += static_cast<int>(std::count(m.offSurface.begin(), m.offSurface.end(), 1));
+    set.triangleOffSurface.insert(set.triangleOffSurface.end(), m.offSurface.begin(), m.offSurface.end());
     if (m.areaError > report.worstFaceAreaError) {
       report.worstFaceAreaError = m.areaError;
       report.worstFace = f;

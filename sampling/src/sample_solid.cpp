@@ -137,6 +137,8 @@ SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& param
   report.facesFailed = rec.facesFailed;
   report.orphanSamples = rec.orphanSamples;
   report.droppedTriangles = rec.droppedTriangles;
+  report.flippedEdges = rec.flippedEdges;
+  report.misalignedTriangles = rec.misalignedTriangles;
   report.worstFaceAreaError = rec.worstFaceAreaError;
   report.worstFace = rec.worstFace;
 

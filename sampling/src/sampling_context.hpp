@@ -51,6 +51,8 @@ struct ReconstructionReport {
   int facesFailed = 0;        // faces whose constrained triangulation could not be built
   int orphanSamples = 0;      // face samples left out of every triangle
   int droppedTriangles = 0;   // degenerate triangles dropped (pole fans, merged points)
+  int flippedEdges = 0;       // edges flipped to bring triangles onto the surface
+  int misalignedTriangles = 0;  // triangles still more than 45° off the surface normal
   std::vector<std::string> problems;  // one line per failed face
   double worstFaceAreaError = 0;      // max over faces of |mesh area / exact area - 1|
   int worstFace = -1;

@@ -51,6 +51,10 @@ struct MedialParams {
   // (β0 14 -> 7) but cost 0.66 % of convex-edge attachment (islands near its
   // neck rim counted as attached), 3 lever islands with no metric change.
   double islandRadiusFraction = 0.0;
+  // A component of the inner complex that is one point (all its vertices
+  // within 1e-9 of the bounding-box diagonal: zero-size facets at the centre
+  // of a sphere's cospherical samples) is dropped, never the largest one.
+  bool dropPointIslands = true;
   // Compute β2 (and so β1) exactly only while the 2-core left after free-face
   // collapses has at most this many polygons; otherwise β1 = β2 = -1.
   std::size_t bettiCoreLimit = 200000;

@@ -70,6 +70,13 @@ std::size_t fillSingleFacetHoles(const DelaunayVoronoi& dv, const SelectedFacets
 // Returns the number of components removed; *polygonsRemoved their polygons.
 std::size_t dropSubResolutionIslands(MedialComplex& complex, double minRadius, std::size_t* polygonsRemoved);
 
+// Removes every connected component, except the one with the most polygons,
+// whose vertices all lie in a box no wider than `tolerance` (zero-size
+// polygons at the common centre of cospherical samples, see
+// small_islands.cpp), and the vertices no polygon uses any more.
+// Returns the number of components removed; *polygonsRemoved their polygons.
+std::size_t dropPointIslands(MedialComplex& complex, double tolerance, std::size_t* polygonsRemoved);
+
 ComplexEdges buildComplexEdges(const MedialComplex& complex);
 
 // Sheets = maximal sets of polygons connected across edges shared by exactly

@@ -94,6 +94,11 @@ struct SampleSet {
   // from surface to mesh never passes through it): the pair-mesh labels use
   // it to skip the exact classifier (sampling/cell_classification.hpp).
   std::vector<double> triangleDeviation;
+  // Per triangle (optional, empty when unknown): 1 if the triangle stands
+  // more than 45° off the exact surface normal (a UV triangle at a pole of a
+  // degenerate edge that no flip could mend). It stays in the surface, which
+  // must be closed, but its normal is no tangent plane: umbrellas skip it.
+  std::vector<std::uint8_t> triangleOffSurface;
   // Umbrella of sample i = triangles umbrellaTriangles[umbrellaOffsets[i] .. umbrellaOffsets[i+1]).
   std::vector<Index> umbrellaOffsets;
   std::vector<Index> umbrellaTriangles;

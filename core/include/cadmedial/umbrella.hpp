@@ -36,7 +36,8 @@ struct UmbrellaData {
 
 // Uses samples.triangles and samples.umbrellaOffsets/umbrellaTriangles (built
 // with SampleSet::buildUmbrellas() when empty). Samples inside concave B-rep
-// edges (samples.kind / owner / edges) get one-sided umbrellas.
+// edges (samples.kind / owner / edges) get one-sided umbrellas. Triangles
+// flagged in samples.triangleOffSurface are left out.
 UmbrellaData computeUmbrellaData(const SampleSet& samples);
 
 // 1 for each sample inside a concave B-rep edge (not at its end vertices).
@@ -47,9 +48,12 @@ std::vector<std::uint8_t> concaveEdgeSamples(const SampleSet& samples);
 // Used by CAD_MEDIAL (reconstruction triangles) and by MEDIAL (Delaunay
 // triangles cut by the tangent polygon, medial_umbrellas.hpp).
 // oneSided (optional, per sample): which samples get one-sided umbrellas.
+// offSurface (optional, per triangle): triangles to leave out, as if
+// degenerate (SampleSet::triangleOffSurface).
 UmbrellaData umbrellaDataFromTriangles(const std::vector<Vec3>& points, const std::vector<std::array<Index, 3>>& triangles,
                                        const std::vector<Index>& offsets, const std::vector<Index>& members,
-                                       const std::vector<std::uint8_t>* oneSided = nullptr);
+                                       const std::vector<std::uint8_t>* oneSided = nullptr,
+                                       const std::vector<std::uint8_t>* offSurface = nullptr);
 
 // The Angle condition's question for one umbrella triangle of sample p: is
 // the Delaunay edge direction `dir` (not normalised) within the triangle's

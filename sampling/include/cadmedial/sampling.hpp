@@ -33,6 +33,8 @@ struct SamplingReport {
   std::size_t faceSamples = 0, edgeSamples = 0, vertexSamples = 0, legSamples = 0;
   std::size_t triplets = 0, tripletsDropped = 0;
   int facesFailed = 0, orphanSamples = 0, droppedTriangles = 0;
+  int flippedEdges = 0;         // UV-Delaunay edges flipped: a triangle stood > 45° off the exact surface
+  int misalignedTriangles = 0;  // triangles still > 45° off the exact surface normal after the flips
   double worstFaceAreaError = 0;  // max over faces of |reconstructed area / exact area - 1|
   int worstFace = -1;
   SurfaceMeshStats surface;  // the stitched reconstruction
