@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <BRepCheck_Analyzer.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -15,6 +16,7 @@
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <STEPControl_Reader.hxx>
+#include <ShapeFix_Shape.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -103,18 +105,56 @@ ShapeCensus takeCensus(const TopoDS_Shape& shape) {
   return c;
 }
 
+namespace {
+
+bool hasOnlyClosedShells(const TopoDS_Solid& solid) {
+  bool closed = true, hasFace = false;
+  for (TopExp_Explorer s(solid, TopAbs_SHELL); s.More(); s.Next()) {
+    hasFace = true;
+    if (!BRep_Tool::IsClosed(s.Current())) closed = false;
+  }
+  return closed && hasFace;
+}
+
+// A solid BRepCheck rejects can send OCCT's own algorithms into endless
+// loops: a shelled, filleted box with a misoriented sub-shape kept
+// BRepTopAdaptor_FClass2d::Perform busy for 15 minutes while its corners
+// were classified. ShapeFix mends the common faults (orientation, wires,
+// tolerances); the mended solid is used when BRepCheck accepts it and it is
+// still one closed solid, otherwise the original, with a warning either way.
+TopoDS_Solid repairedIfInvalid(const TopoDS_Solid& solid, int index, std::vector<std::string>* warnings) {
+  if (BRepCheck_Analyzer(solid).IsValid()) return solid;
+  const std::string which = "solid " + std::to_string(index);
+  try {
+    ShapeFix_Shape fix(solid);
+    fix.Perform();
+    TopExp_Explorer e(fix.Shape(), TopAbs_SOLID);
+    if (e.More()) {
+      const TopoDS_Solid fixed = TopoDS::Solid(e.Current());
+      e.Next();
+      if (!e.More() && hasOnlyClosedShells(fixed) && BRepCheck_Analyzer(fixed).IsValid()) {
+        if (warnings) warnings->push_back(which + ": not a valid B-rep (BRepCheck); repaired with ShapeFix");
+        return fixed;
+      }
+    }
+  } catch (const Standard_Failure&) {
+    // fall through: keep the original
+  }
+  if (warnings)
+    warnings->push_back(which + ": not a valid B-rep (BRepCheck) and ShapeFix could not mend it; "
+                                "the axis may be wrong, or OCCT may not finish on it");
+  return solid;
+}
+
+}  // namespace
+
 std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<std::string>* warnings) {
   std::vector<TopoDS_Solid> result;
   int index = 0;
   for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next(), ++index) {
     const TopoDS_Solid& solid = TopoDS::Solid(e.Current());
-    bool closed = true, hasFace = false;
-    for (TopExp_Explorer s(solid, TopAbs_SHELL); s.More(); s.Next()) {
-      hasFace = true;
-      if (!BRep_Tool::IsClosed(s.Current())) closed = false;
-    }
-    if (closed && hasFace) {
-      result.push_back(solid);
+    if (hasOnlyClosedShells(solid)) {
+      result.push_back(repairedIfInvalid(solid, index, warnings));
     } else if (warnings) {
       warnings->push_back("solid " + std::to_string(index) + " skipped: its shell is not closed");
     }

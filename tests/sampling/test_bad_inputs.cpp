@@ -8,6 +8,17 @@
 #include <filesystem>
 #include <fstream>
 
+#include <BRepBndLib.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <Bnd_Box.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
+#include <BRepOffsetAPI_MakeThickSolid.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepTools.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
+
 #include "cadmedial/brep_io.hpp"
 #include "cadmedial/errors.hpp"
 #include "cadmedial/sampling.hpp"
@@ -100,6 +111,53 @@ TEST_F(BadInputs, ShellOnlyAndSurfaceOnlyFilesSayWhatTheyHold) {
     std::string err;
     EXPECT_EQ(runCli(dir + "/" + name, err), kExitNoSolid) << err;
   }
+}
+
+// A small box with filleted edges, hollowed to 0.6 through its top face with
+// OCCT's thick-solid offset (as FreeCAD's Part thickness does): the result
+// has a misoriented sub-shape that BRepCheck rejects.
+TopoDS_Shape hollowedFilletedBox() {
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(12, 8, 10).Shape();
+  BRepFilletAPI_MakeFillet fillet(box);
+  for (TopExp_Explorer e(box, TopAbs_EDGE); e.More(); e.Next()) fillet.Add(1.5, TopoDS::Edge(e.Current()));
+  const TopoDS_Shape rounded = fillet.Shape();
+  TopTools_ListOfShape open;
+  for (TopExp_Explorer f(rounded, TopAbs_FACE); f.More(); f.Next()) {
+    Bnd_Box b;
+    BRepBndLib::Add(f.Current(), b);
+    double x0, y0, z0, x1, y1, z1;
+    b.Get(x0, y0, z0, x1, y1, z1);
+    if (z0 > 10 - 1e-6) open.Append(f.Current());  // the flat top
+  }
+  BRepOffsetAPI_MakeThickSolid thick;
+  thick.MakeThickSolidByJoin(rounded, open, -0.6, 1e-4);
+  return thick.Shape();
+}
+
+TEST_F(BadInputs, InvalidSolidIsRepairedAndSampled) {
+  const TopoDS_Shape hollow = hollowedFilletedBox();
+  // Without this precondition the test would not exercise the repair.
+  ASSERT_FALSE(BRepCheck_Analyzer(hollow).IsValid());
+  const std::string path = (dir_ / "hollow_box.brep").string();
+  ASSERT_TRUE(BRepTools::Write(hollow, path.c_str()));
+
+  const LoadedModel model = loadModel(path);
+  ASSERT_EQ(model.solids.size(), 1u);
+  EXPECT_TRUE(BRepCheck_Analyzer(model.solids[0]).IsValid());
+  bool warned = false;
+  for (const std::string& w : model.warnings) warned = warned || w.find("repaired with ShapeFix") != std::string::npos;
+  EXPECT_TRUE(warned);
+
+  // The unrepaired solid sent the corner classification into an endless
+  // loop inside OCCT; the CLI must now finish (time-boxed so a regression
+  // fails instead of hanging the suite).
+  const fs::path out = dir_ / "hollow_out";
+  const std::string cmd = "timeout 120 " + std::string(CADMEDIAL_CLI) + " sample '" + path + "' -o '" +
+                          out.string() + "' >/dev/null 2>&1";
+  const int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  EXPECT_TRUE(fs::exists(out / "solid_0" / "sampling.json"));
 }
 
 TEST_F(BadInputs, AssembliesAndMultiSolidFilesSampleEverySolid) {
