@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepCheck_Analyzer.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -120,19 +124,52 @@ bool hasOnlyClosedShells(const TopoDS_Solid& solid) {
 // loops: a shelled, filleted box with a misoriented sub-shape kept
 // BRepTopAdaptor_FClass2d::Perform busy for 15 minutes while its corners
 // were classified. ShapeFix mends the common faults (orientation, wires,
-// tolerances); the mended solid is used when BRepCheck accepts it and it is
-// still one closed solid, otherwise the original, with a warning either way.
+// tolerances). Its result is used only when BRepCheck accepts it, it is one
+// closed solid with nothing beside it, and its area is the original's (no
+// face lost); otherwise the original is kept. A warning says which. ShapeFix
+// works on a copy: it edits shared sub-shapes in place.
+bool isValidShape(const TopoDS_Shape& shape) {
+  try {
+    return BRepCheck_Analyzer(shape, Standard_True, Standard_True).IsValid();
+  } catch (const Standard_Failure&) {
+    return false;
+  }
+}
+
+// Sum of the faces' unsigned areas: a misoriented face counts negatively in
+// the shape's own surface properties (the hollowed box: 20 730 against 23 480
+// after the repair), which is what the repair fixes.
+double areaOf(const TopoDS_Shape& shape) {
+  double sum = 0;
+  for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
+    GProp_GProps props;
+    BRepGProp::SurfaceProperties(f.Current(), props);
+    sum += std::abs(props.Mass());
+  }
+  return sum;
+}
+
+int faceCount(const TopoDS_Shape& shape) {
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(shape, TopAbs_FACE, faces);
+  return faces.Extent();
+}
+
 TopoDS_Solid repairedIfInvalid(const TopoDS_Solid& solid, int index, std::vector<std::string>* warnings) {
-  if (BRepCheck_Analyzer(solid).IsValid()) return solid;
+  if (isValidShape(solid)) return solid;
   const std::string which = "solid " + std::to_string(index);
   try {
-    ShapeFix_Shape fix(solid);
+    ShapeFix_Shape fix(BRepBuilderAPI_Copy(solid).Shape());
     fix.Perform();
-    TopExp_Explorer e(fix.Shape(), TopAbs_SOLID);
+    const TopoDS_Shape result = fix.Shape();
+    TopExp_Explorer e(result, TopAbs_SOLID);
     if (e.More()) {
       const TopoDS_Solid fixed = TopoDS::Solid(e.Current());
       e.Next();
-      if (!e.More() && hasOnlyClosedShells(fixed) && BRepCheck_Analyzer(fixed).IsValid()) {
+      const double area = areaOf(solid);
+      const bool alone = !e.More() && faceCount(result) == faceCount(fixed);
+      const bool sameArea = std::abs(areaOf(fixed) - area) <= 1e-6 * std::abs(area);
+      if (alone && sameArea && hasOnlyClosedShells(fixed) && isValidShape(fixed)) {
         if (warnings) warnings->push_back(which + ": not a valid B-rep (BRepCheck); repaired with ShapeFix");
         return fixed;
       }

@@ -145,6 +145,18 @@ double faceTolerance(const TopoDS_Face& face) {
   return tolerance;
 }
 
+// True if a vertex of the triangulation adjacent to `from` (other than `to`
+// itself) carries `to`'s sample id.
+bool joinedElsewhere(const Cdt& cdt, Cdt::Vertex_handle from, Cdt::Vertex_handle to) {
+  auto around = cdt.incident_vertices(from);
+  const auto start = around;
+  if (around == nullptr) return false;
+  do {
+    if (!cdt.is_infinite(around) && Cdt::Vertex_handle(around) != to && around->info().id == to->info().id) return true;
+  } while (++around != start);
+  return false;
+}
+
 constexpr double kOffSurfaceCos = 0.70710678;  // cos 45°: a triangle this far off the surface normal is wrong
 
 // How well a UV triangle (counter-clockwise in the plane) follows the face:
@@ -178,9 +190,12 @@ double alignmentWithSurface(const BRepAdaptor_Surface& surf, const SampleSet& se
 // free edge of a triangle more than 45° off the surface when both new
 // triangles are convex in UV, have three distinct samples, and the worse of
 // the two follows the surface better than the worse of the old two.
+// The new edge a-d must not exist already in 3D: at a pole one sample has
+// several UV copies, and an edge from d to another copy of a's sample would
+// then be shared by more than two triangles of the stitched surface.
 // Returns the number of edges flipped.
-int flipTrianglesOffTheSurface(Cdt& cdt, const BRepAdaptor_Surface& surf, const SampleSet& set,
-                                               double su, double sv) {
+int flipTrianglesOffTheSurface(Cdt& cdt, const BRepAdaptor_Surface& surf, const SampleSet& set, double su,
+                               double sv) {
   constexpr int kPasses = 8;
   auto distinct = [](Cdt::Vertex_handle a, Cdt::Vertex_handle b, Cdt::Vertex_handle c) {
     const Index x = a->info().id, y = b->info().id, z = c->info().id;
@@ -207,6 +222,7 @@ int flipTrianglesOffTheSurface(Cdt& cdt, const BRepAdaptor_Surface& surf, const 
         const auto a = f->vertex(i), b = f->vertex(Cdt::ccw(i)), c = f->vertex(Cdt::cw(i));
         const auto d = g->vertex(cdt.mirror_index(f, i));
         if (!distinct(a, b, d) || !distinct(a, d, c)) continue;
+        if (joinedElsewhere(cdt, a, d) || joinedElsewhere(cdt, d, a)) continue;
         if (CGAL::orientation(a->point(), b->point(), d->point()) != CGAL::LEFT_TURN ||
             CGAL::orientation(a->point(), d->point(), c->point()) != CGAL::LEFT_TURN)
           continue;

@@ -133,6 +133,32 @@ TEST(Selection, EmptyOrDegenerateUmbrellaSatisfiesNothing) {
   EXPECT_TRUE(satisfiesAngleOrRatio(u, 0, up, 100, 0.1, 8));
 }
 
+TEST(Selection, TrianglesOffTheSurfaceLeaveTheUmbrella) {
+  // A triangle standing on edge over the flat umbrella (normal along x, as
+  // at a pole of a degenerate edge) vetoes an edge straight up at sample 0
+  // only if the umbrella keeps it: |n·up| = 0 for it.
+  SampleSet s = flatUmbrella();
+  s.points.push_back({0, 0, 0.05});  // sample 4
+  s.kind.push_back(SampleKind::Face);
+  s.owner.push_back(0);
+  s.onConvexEdge.push_back(0);
+  s.isNonConcaveCorner.push_back(0);
+  s.triangles.push_back({0, 2, 4});  // in the plane x = 0
+  s.triangleFace.push_back(0);
+  s.buildUmbrellas();
+  const double up[3] = {0, 0, 0.5};
+  EXPECT_FALSE(satisfiesAngleOrRatio(computeUmbrellaData(s), 0, up, 0.5, std::sin(5 * M_PI / 180), 8));
+
+  s.triangleOffSurface = {0, 0, 1};
+  s.validate();
+  const UmbrellaData u = computeUmbrellaData(s);
+  EXPECT_EQ(u.offsets[1] - u.offsets[0], 2u);  // the two flat triangles
+  EXPECT_TRUE(satisfiesAngleOrRatio(u, 0, up, 0.5, std::sin(5 * M_PI / 180), 8));
+
+  s.triangleOffSurface = {0, 1};  // one flag per triangle or none
+  EXPECT_THROW(s.validate(), std::exception);
+}
+
 TEST(Selection, CornerRule) {
   // Build a tiny SelectedFacets by hand: only {1,2} selected.
   SelectedFacets f;

@@ -132,3 +132,29 @@ TEST(Topology, SubResolutionIslandsAreDroppedButNeverTheLargestBall) {
   EXPECT_EQ(thin.polygonCount(), 2u);
   EXPECT_DOUBLE_EQ(*std::max_element(thin.radius.begin(), thin.radius.end()), 0.01);
 }
+
+TEST(Topology, OnePointIslandsAreDroppedButNeverTheLargestComponent) {
+  // Component A (vertices 0-3 on the x axis) and B (4-6, all at one point,
+  // as the Voronoi vertices of cospherical samples are).
+  MedialComplex mc = complexOf(7, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}});
+  for (Index v : {4, 5, 6}) mc.vertices[v] = {10, 1e-12 * v, 0};
+  std::size_t removed = 0;
+  EXPECT_EQ(dropPointIslands(mc, 1e-9, &removed), 1u);
+  EXPECT_EQ(removed, 1u);
+  ASSERT_EQ(mc.vertices.size(), 4u);
+  EXPECT_EQ(mc.polygonCount(), 2u);
+  EXPECT_EQ(topologyOf(mc).beta0, 1);
+
+  // A component wider than the tolerance stays, however small.
+  MedialComplex small = complexOf(7, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}});
+  for (Index v : {4, 5, 6}) small.vertices[v] = {10, 1e-6 * v, 0};
+  EXPECT_EQ(dropPointIslands(small, 1e-9, nullptr), 0u);
+  EXPECT_EQ(topologyOf(small).beta0, 2);
+
+  // The largest component (by polygons) stays even when it is one point.
+  MedialComplex point = complexOf(7, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}});
+  for (Index v : {0, 1, 2, 3}) point.vertices[v] = {0, 0, 0};
+  for (Index v : {4, 5, 6}) point.vertices[v] = {5, 0, 0};
+  EXPECT_EQ(dropPointIslands(point, 1e-9, nullptr), 1u);
+  EXPECT_EQ(point.polygonCount(), 2u);
+}

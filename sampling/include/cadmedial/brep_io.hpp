@@ -40,8 +40,9 @@ TopoDS_Shape readBrepString(const std::string& brepText);
 ShapeCensus takeCensus(const TopoDS_Shape& shape);
 
 // Closed solids of a shape (a solid whose shells have no free edge). A solid
-// BRepCheck rejects is replaced by its ShapeFix repair when that passes
-// BRepCheck; either way a warning says so.
+// BRepCheck rejects is replaced by its ShapeFix repair when that is one
+// closed solid of the same area that passes BRepCheck, else kept as it is;
+// either way a warning says so.
 std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace cadmedial
