@@ -51,8 +51,7 @@ std::vector<std::uint8_t> concaveEdgeSamples(const SampleSet& samples) {
 
 UmbrellaData computeUmbrellaData(const SampleSet& samples) {
   const std::vector<std::uint8_t> oneSided = concaveEdgeSamples(samples);
-  const std::vector<std::uint8_t>* offSurface =
-      samples.triangleOffSurface.size() == samples.triangles.size() ? &samples.triangleOffSurface : nullptr;
+  const std::vector<std::uint8_t>* offSurface = &samples.triangleOffSurface;  // ignored unless one per triangle
   if (samples.umbrellaOffsets.size() == samples.size() + 1)
     return umbrellaDataFromTriangles(samples.points, samples.triangles, samples.umbrellaOffsets,
                                      samples.umbrellaTriangles, &oneSided, offSurface);

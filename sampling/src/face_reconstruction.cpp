@@ -175,8 +175,8 @@ double alignmentWithSurface(const BRepAdaptor_Surface& surf, const SampleSet& se
   gp_Vec du, dv;
   surf.D1(u, v, p, du, dv);
   const gp_Vec ns = du.Crossed(dv);
+  if (!(ns.Magnitude() > 1e-12 * du.Magnitude() * dv.Magnitude())) return 1.0;
   const double lengths = n3.Magnitude() * ns.Magnitude();
-  if (ns.Magnitude() <= 1e-12 * du.Magnitude() * dv.Magnitude() || ns.Magnitude() == 0) return 1.0;
   return lengths > 0 ? n3.Dot(ns) / lengths : 0.0;
 }
 
