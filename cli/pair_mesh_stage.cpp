@@ -76,6 +76,7 @@ PairMeshStage buildPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& sam
   report["split_boundary_edges"] = mesh.counts.splitEdges;
   report["retriangulated_voronoi_polygons"] = mesh.counts.retriangulatedPolygons;
   report["relabelled_flat_cells"] = mesh.counts.relabelledFlatCells;
+  report["relabelled_boundary_cells"] = mesh.counts.relabelledBoundaryCells;
   report["inverted_after_repair"] = mesh.counts.invertedAfterRepair;
   report["seconds"] = {{"classify_cells", classifySeconds},
                        {"classify_cells_near_test", cells.nearSeconds},

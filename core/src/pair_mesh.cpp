@@ -1,4 +1,5 @@
 #include "cadmedial/pair_mesh.hpp"
+#include "pair_mesh_boundary_cells.hpp"
 #include "pair_mesh_flat_cells.hpp"
 
 #include <algorithm>
@@ -240,6 +241,21 @@ class Builder {
   PairMesh m_;
 };
 
+// The Voronoi nodes of `rebuilt` take the positions the repair gave the
+// nodes of the same cells in `repaired`: only the elements around the
+// relabelled cells are left to repair.
+void keepRepairedPositions(const PairMesh& repaired, PairMesh& rebuilt) {
+  std::unordered_map<Index, Index> nodeOfCell;
+  nodeOfCell.reserve(repaired.nodes.size());
+  for (Index n = 0; n < repaired.nodes.size(); ++n)
+    if (repaired.nodeCell[n] != kNoIndex) nodeOfCell.emplace(repaired.nodeCell[n], n);
+  for (Index n = 0; n < rebuilt.nodes.size(); ++n) {
+    if (rebuilt.nodeCell[n] == kNoIndex) continue;
+    const auto it = nodeOfCell.find(rebuilt.nodeCell[n]);
+    if (it != nodeOfCell.end()) rebuilt.nodes[n] = repaired.nodes[it->second];
+  }
+}
+
 }  // namespace
 
 const char* pairElementTypeName(PairElementType t) {
@@ -262,7 +278,32 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
   mesh.seconds = watch.seconds();
   watch.restart();
   if (repair) {
-    repairFlippedElements(mesh, dv);
+    std::size_t inverted = repairFlippedElements(mesh, dv);
+    // Last resort, up to three times: the boundary cells whose Voronoi nodes
+    // the repair could not place go outer, and the mesh is rebuilt (nodes
+    // where the repair left them) and repaired; kept only when fewer
+    // elements stay inverted.
+    for (int pass = 0; pass < 3 && inverted > 0; ++pass) {
+      const std::vector<Index> cells = boundaryCellsOfInvertedElements(dv, inner, mesh);
+      if (cells.empty()) break;
+      std::vector<std::uint8_t> trialInner = inner;
+      for (Index c : cells) trialInner[c] = 0;
+      PairMesh trial = Builder(dv, samples, trialInner, innerAxis).build();
+      keepRepairedPositions(mesh, trial);
+      const std::size_t trialInverted = repairFlippedElements(trial, dv);
+      if (trialInverted >= inverted) break;
+      PairMeshCounts& c = trial.counts;
+      c.invertedBeforeRepair = mesh.counts.invertedBeforeRepair;
+      c.relabelledFlatCells = relabelled;
+      c.relabelledBoundaryCells = mesh.counts.relabelledBoundaryCells + cells.size();
+      c.weldedNodes += mesh.counts.weldedNodes;
+      c.movedNodes += mesh.counts.movedNodes;
+      c.retriangulatedPolygons += mesh.counts.retriangulatedPolygons;
+      trial.seconds = mesh.seconds;
+      mesh = std::move(trial);
+      inner = std::move(trialInner);
+      inverted = trialInverted;
+    }
   } else {
     std::size_t negative = 0;
     for (std::size_t i = 0; i < mesh.size(); ++i) negative += isInverted(mesh, i) ? 1 : 0;

@@ -5,14 +5,15 @@
 namespace cadmedial {
 
 bool elementNeedsRepair(const std::vector<Vec3>& nodes, const std::array<Index, 4>& t) {
-  using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
-  auto point = [&](Index n) { return Point(nodes[n][0], nodes[n][1], nodes[n][2]); };
-  const auto o = CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3]));
-  if (o != CGAL::ZERO) return o == CGAL::NEGATIVE;
+  // Two coincident corners (welded Voronoi nodes) make the element exactly
+  // flat: tested first, because the orientation predicate would fall back
+  // to exact arithmetic on every such element.
   for (int a = 0; a < 4; ++a)
     for (int b = a + 1; b < 4; ++b)
       if (nodes[t[a]] == nodes[t[b]]) return false;
-  return true;
+  using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  auto point = [&](Index n) { return Point(nodes[n][0], nodes[n][1], nodes[n][2]); };
+  return CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3])) != CGAL::POSITIVE;
 }
 
 double signedTetVolume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {

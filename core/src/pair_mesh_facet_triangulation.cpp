@@ -108,11 +108,12 @@ std::pair<std::vector<std::array<Index, 3>>, Score> bestTriangulation(const std:
 
 }  // namespace
 
-std::size_t retriangulateFaceVertexPolygons(PairMesh& m) {
+std::size_t retriangulateFaceVertexPolygons(PairMesh& m, const std::vector<std::uint8_t>* needsRepair) {
   // Only the polygons holding a bad element, each with its element slots.
   std::unordered_map<std::uint64_t, std::vector<std::size_t>> slots;
   for (std::size_t i = 0; i < m.tets.size(); ++i)
-    if (m.type[i] == PairElementType::FaceVertex && elementNeedsRepair(m.nodes, m.tets[i]))
+    if (m.type[i] == PairElementType::FaceVertex &&
+        (needsRepair ? (*needsRepair)[i] != 0 : elementNeedsRepair(m.nodes, m.tets[i])))
       slots[facetKey(m.medialSimplex[i])];
   if (slots.empty()) return 0;
   for (std::size_t i = 0; i < m.tets.size(); ++i)

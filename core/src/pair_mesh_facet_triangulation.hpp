@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "cadmedial/pair_mesh.hpp"
 
@@ -18,7 +20,8 @@ namespace cadmedial {
 // with the fewest such elements, then the largest smallest volume relative to
 // size (dynamic programming over the polygon, O(k^3)), and keeps it when it
 // has fewer bad elements than the current one. Element slots stay the same.
-// Returns the number of polygons re-triangulated.
-std::size_t retriangulateFaceVertexPolygons(PairMesh& mesh);
+// Returns the number of polygons re-triangulated. needsRepair: per element,
+// whether it needs repair, when the caller keeps that current (else tested).
+std::size_t retriangulateFaceVertexPolygons(PairMesh& mesh, const std::vector<std::uint8_t>* needsRepair = nullptr);
 
 }  // namespace cadmedial

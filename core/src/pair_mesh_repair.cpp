@@ -9,6 +9,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "cadmedial/pair_mesh.hpp"
 #include "pair_mesh_element_checks.hpp"
 #include "pair_mesh_facet_triangulation.hpp"
@@ -34,6 +37,10 @@ double tetVolume(const PairMesh& m, std::size_t i) {
 bool isInverted(const PairMesh& m, std::size_t i) {
   using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
   const auto& t = m.tets[i];
+  // Coincident corners: exactly flat (and the predicate would go exact).
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b)
+      if (m.nodes[t[a]] == m.nodes[t[b]]) return false;
   auto point = [&](Index n) { return Point(m.nodes[n][0], m.nodes[n][1], m.nodes[n][2]); };
   return CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3])) == CGAL::NEGATIVE;
 }
@@ -71,7 +78,17 @@ std::size_t countNegative(const PairMesh& m) {
 std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds, std::vector<std::uint8_t>& moved) {
   const std::size_t n = m.nodes.size();
   moved.resize(n, 0);
-  auto negative = [&m](std::size_t i) { return needsRepair(m, i); };
+  // Per element: needs repair. Kept current as nodes move (only the
+  // elements around a moved node change), so that no round has to test all
+  // elements again; rebuilt when polygons are re-triangulated.
+  std::vector<std::uint8_t> badFlag(m.tets.size(), 0);
+  auto flagAll = [&]() {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.tets.size()), [&](const auto& r) {
+      for (std::size_t i = r.begin(); i != r.end(); ++i) badFlag[i] = needsRepair(m, i) ? 1 : 0;
+    });
+    return static_cast<std::size_t>(std::count(badFlag.begin(), badFlag.end(), 1));
+  };
+  auto negative = [&badFlag](std::size_t i) { return badFlag[i] != 0; };
   // Node -> incident tetrahedra (CSR); rebuilt when polygons are re-triangulated.
   std::vector<Index> offsets, incident;
   auto buildIncidence = [&]() {
@@ -94,6 +111,10 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
       }
     }
     return count;
+  };
+
+  auto flagAround = [&](Index v) {
+    for (Index k = offsets[v]; k < offsets[v + 1]; ++k) badFlag[incident[k]] = needsRepair(m, incident[k]) ? 1 : 0;
   };
 
   // Negative elements around a set of nodes, each element counted once.
@@ -164,6 +185,7 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
         m.nodes[cluster[k]] = best && bestCount < before ? *best : start[k];
         if (best && bestCount < before) moved[cluster[k]] = 1;
       }
+      for (Index v : cluster) flagAround(v);
     }
   };
 
@@ -178,13 +200,13 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
     return nearestValidNodePosition(m.nodes, v, elements, 0.5 * std::sqrt(far));
   };
 
-  std::size_t bad = countNeedingRepair(m);
+  std::size_t bad = flagAll();
   for (int round = 0; round < rounds && bad > 0; ++round) {
     // Moves fold Voronoi polygons that another triangulation keeps positive.
-    if (const std::size_t changed = retriangulateFaceVertexPolygons(m)) {
+    if (const std::size_t changed = retriangulateFaceVertexPolygons(m, &badFlag)) {
       m.counts.retriangulatedPolygons += changed;
       buildIncidence();
-      bad = countNeedingRepair(m);
+      bad = flagAll();
       if (bad == 0) break;
     }
     std::vector<Index> candidates;
@@ -240,15 +262,16 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
         if (count == 0) break;
       }
       m.nodes[v] = best;
+      flagAround(v);
       if (best != start) moved[v] = 1;
     }
     // Only when single moves have stalled (round past half): collapsing
     // clusters trades elements and is the rougher tool.
     if (2 * round >= rounds) collapseNodeClusters();
-    bad = countNeedingRepair(m);
+    bad = static_cast<std::size_t>(std::count(badFlag.begin(), badFlag.end(), 1));
   }
   if (bad > 0) {
-    if (const std::size_t changed = retriangulateFaceVertexPolygons(m)) {
+    if (const std::size_t changed = retriangulateFaceVertexPolygons(m, &badFlag)) {
       m.counts.retriangulatedPolygons += changed;
       bad = countNeedingRepair(m);
     }

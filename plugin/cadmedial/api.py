@@ -274,6 +274,7 @@ class PairMesh:
                      "enclosed_volume", "exact_volume", "volume_error",
                      "inverted_before_repair", "moved_voronoi_nodes", "welded_voronoi_nodes",
                      "split_boundary_edges", "retriangulated_voronoi_polygons", "relabelled_flat_cells",
+                     "relabelled_boundary_cells",
                      "inverted_after_repair")
 
     def __init__(self, data):

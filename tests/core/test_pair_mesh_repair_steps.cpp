@@ -1,9 +1,15 @@
 // Single steps of the pair-mesh build and repair, on hand-made inputs whose
 // right answer is known: the re-triangulation of a folded Voronoi polygon,
-// and the label of a flat Delaunay cell.
+// the label of a flat Delaunay cell, and the boundary cells offered for
+// relabelling around an inverted element.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
 #include "cadmedial/pair_mesh.hpp"
+#include "pair_mesh_boundary_cells.hpp"
 #include "pair_mesh_facet_triangulation.hpp"
 
 using namespace cadmedial;
@@ -122,4 +128,87 @@ TEST(PairMeshRepairSteps, ThickCellKeepsTheClassifiersSide) {
   EXPECT_EQ(m.counts.relabelledFlatCells, 0u);
   EXPECT_EQ(m.boundaryTriangles.size(), 4u);
   EXPECT_EQ(m.counts.vertexFace, 4u);
+}
+
+namespace {
+
+// Samples of a thin wedge (a knife): two 9 × 9 grids, z = 0 and z = 0.03 x,
+// from x = 0.1 (0.003 thick) to x = 0.9; every finite cell inner.
+SampleSet knife() {
+  SampleSet s;
+  for (int i = 1; i <= 9; ++i)
+    for (int j = 1; j <= 9; ++j) {
+      const double x = 0.1 * i, y = 0.1 * j;
+      s.points.push_back({x, y, 0});
+      s.points.push_back({x, y + 0.013, 0.03 * x});  // shifted: no four cospherical
+    }
+  return s;
+}
+
+// Inner cells around every edge of the triangulation form at most one run.
+std::size_t nonManifoldEdges(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner) {
+  std::size_t bad = 0;
+  const auto& dt = dv.triangulation();
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+    auto circ = dt.incident_cells(*e);
+    const auto start = circ;
+    auto isInner = [&](const auto& c) {
+      const Index id = DelaunayVoronoi::cellId(c);
+      return !dv.isInfinite(id) && inner[id] != 0;
+    };
+    int changes = 0;
+    bool previous = isInner(start);
+    do {
+      ++circ;
+      changes += isInner(circ) != previous ? 1 : 0;
+      previous = isInner(circ);
+    } while (circ != start);
+    bad += changes > 2 ? 1 : 0;
+  }
+  return bad;
+}
+
+}  // namespace
+
+// Each boundary cell in turn gets its Voronoi node pushed far out through its
+// boundary facet (its Vertex-Face element inverted). The cells offered for
+// relabelling include it, and the boundary stays manifold at every edge: in
+// the thin wedge many cells can only go together with the runs of cells they
+// cut off around an edge (without those, 155 of the 263 are offered).
+TEST(PairMeshRepairSteps, RelabelledBoundaryCellsKeepEveryEdgeManifold) {
+  const SampleSet samples = knife();
+  const DelaunayVoronoi dv(samples.points);
+  std::vector<std::uint8_t> inner(dv.cellCount(), 0);
+  for (Index c = 0; c < dv.cellCount(); ++c) inner[c] = dv.isInfinite(c) ? 0 : 1;
+  ASSERT_EQ(nonManifoldEdges(dv, inner), 0u);
+  const PairMesh built = buildPairMesh(dv, samples, inner, nullptr, false);
+  std::size_t tried = 0, offered = 0;
+  for (std::size_t i = 0; i < built.size(); ++i) {
+    if (built.type[i] != PairElementType::VertexFace) continue;
+    PairMesh m = built;
+    const auto& t = m.tets[i];
+    const Vec3 &x = m.nodes[t[1]], &y = m.nodes[t[2]], &z = m.nodes[t[3]];
+    const Vec3 u{y[0] - x[0], y[1] - x[1], y[2] - x[2]}, v{z[0] - x[0], z[1] - x[1], z[2] - x[2]};
+    const Vec3 n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(len > 1e-9)) continue;  // three collinear samples of a grid row
+    for (double side : {10.0, -10.0}) {  // the side that inverts it (outward)
+      for (int k = 0; k < 3; ++k) m.nodes[t[0]][k] = (x[k] + y[k] + z[k]) / 3 + side * n[k] / len;
+      if (isInverted(m, i)) break;
+    }
+    ASSERT_TRUE(isInverted(m, i)) << i;
+    const Index cell = m.nodeCell[t[0]];
+    const std::vector<Index> cells = boundaryCellsOfInvertedElements(dv, inner, m);
+    ++tried;
+    std::vector<std::uint8_t> relabelled = inner;
+    for (Index c : cells) {
+      EXPECT_NE(inner[c], 0) << "only inner cells are offered";
+      relabelled[c] = 0;
+    }
+    EXPECT_EQ(nonManifoldEdges(dv, relabelled), 0u) << "element " << i;
+    if (std::find(cells.begin(), cells.end(), cell) != cells.end()) ++offered;
+  }
+  std::printf("%zu boundary cells tried, %zu offered\n", tried, offered);
+  EXPECT_GT(tried, 100u);
+  EXPECT_EQ(offered, tried);
 }

@@ -56,6 +56,11 @@ struct PairMeshCounts {
   // Flat Delaunay cells (coplanar samples, no meaningful circumcenter) given
   // their neighbours' side where that removes a fold of the boundary.
   std::size_t relabelledFlatCells = 0;
+  // Last resort: inner cells on the boundary whose Voronoi node was a corner
+  // of an element the repair left inverted, relabelled outer (the boundary
+  // then runs over their other facets) when the rebuilt, repaired mesh has
+  // fewer inverted elements.
+  std::size_t relabelledBoundaryCells = 0;
   std::size_t invertedAfterRepair = 0;
 };
 
@@ -94,7 +99,8 @@ struct PairMesh {
 // Builds the pair-mesh from the triangulation and per-cell inner labels
 // (cellInner[id] != 0: inner; size dv.cellCount()). innerAxis (optional): the
 // CAD_MEDIAL inner complex built on the same triangulation, for onSheets.
-// Runs the repair unless repair is false.
+// Runs the repair unless repair is false; what it leaves inverted gets the
+// last resort, boundary cells relabelled outer (counts.relabelledBoundaryCells).
 PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, const std::vector<std::uint8_t>& cellInner,
                        const MedialComplex* innerAxis = nullptr, bool repair = true);
 
