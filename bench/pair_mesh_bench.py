@@ -51,7 +51,8 @@ def measure(exe, name, model, workdir, repeat):
              "labels": sec["classify_cells"], "build": sec["build"], "repair": sec["repair"], "check": sec["check"],
              "write": sec.get("write", 0.0), "exact": pm["cells_classified_exactly"],
              "inverted": pm["inverted"], "before": pm["inverted_before_repair"],
-             "split": pm.get("split_boundary_edges", 0), "volume_error": pm["volume_error"],
+             "split": pm.get("split_boundary_edges", 0), "relabelled": pm.get("relabelled_boundary_cells", 0),
+             "volume_error": pm["volume_error"],
              "rss_extra": max(rss_pm - rss_plain, 0.0), "rss": rss_pm}
         r["core_ratio"] = (r["build"] + r["repair"]) / dt
         r["with_labels_ratio"] = (r["labels"] + r["build"] + r["repair"]) / dt
@@ -67,14 +68,15 @@ def measure(exe, name, model, workdir, repeat):
 def table(rows):
     head = ["model", "samples", "tetrahedra", "DT s", "labels s (exact queries)", "build s", "repair s",
             "check s", "write s", "(build+repair)/DT", "(labels+build+repair)/DT", "extra peak MiB",
-            "inverted (before repair)", "split edges", "volume error"]
+            "inverted (before repair)", "split edges", "relabelled cells", "volume error"]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for r in rows:
         lines.append("| " + " | ".join([
             r["model"], str(r["samples"]), str(r["tets"]), f"{r['dt']:.3f}", f"{r['labels']:.3f} ({r['exact']})",
             f"{r['build']:.3f}", f"{r['repair']:.3f}", f"{r['check']:.3f}", f"{r['write']:.3f}",
             f"{r['core_ratio']:.2f}", f"{r['with_labels_ratio']:.2f}", f"{r['rss_extra']:.0f}",
-            f"{r['inverted']} ({r['before']})", str(r["split"]), f"{100 * r['volume_error']:.3g} %"]) + " |")
+            f"{r['inverted']} ({r['before']})", str(r["split"]), str(r["relabelled"]),
+            f"{100 * r['volume_error']:.3g} %"]) + " |")
     return "\n".join(lines)
 
 
