@@ -1,5 +1,6 @@
 #include "cadmedial/pair_mesh.hpp"
 #include "pair_mesh_boundary_cells.hpp"
+#include "pair_mesh_element_checks.hpp"
 #include "pair_mesh_flat_cells.hpp"
 
 #include <algorithm>
@@ -241,6 +242,12 @@ class Builder {
   PairMesh m_;
 };
 
+std::size_t needingRepair(const PairMesh& m) {
+  std::size_t n = 0;
+  for (const auto& t : m.tets) n += elementNeedsRepair(m.nodes, t) ? 1 : 0;
+  return n;
+}
+
 // The Voronoi nodes of `rebuilt` take the positions the repair gave the
 // nodes of the same cells in `repaired`: only the elements around the
 // relabelled cells are left to repair.
@@ -281,28 +288,38 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
     std::size_t inverted = repairFlippedElements(mesh, dv);
     // Last resort, up to three times: the boundary cells whose Voronoi nodes
     // the repair could not place go outer, and the mesh is rebuilt (nodes
-    // where the repair left them) and repaired; kept only when fewer
-    // elements stay inverted.
+    // where the repair left them; its build time counts as repair) and
+    // repaired. Kept only when fewer elements stay inverted and no more need
+    // repair (flat ones included), and when the cells taken out hold at most
+    // 1e-3 of the enclosed volume.
+    const double budget = 1e-3 * std::abs(checkPairMesh(mesh).enclosedVolume);
+    double removed = 0;
     for (int pass = 0; pass < 3 && inverted > 0; ++pass) {
       const std::vector<Index> cells = boundaryCellsOfInvertedElements(dv, inner, mesh);
       if (cells.empty()) break;
+      double volume = 0;
+      for (Index c : cells) volume += std::abs(dv.triangulation().tetrahedron(dv.cell(c)).volume());
+      if (removed + volume > budget) break;
       std::vector<std::uint8_t> trialInner = inner;
       for (Index c : cells) trialInner[c] = 0;
       PairMesh trial = Builder(dv, samples, trialInner, innerAxis).build();
       keepRepairedPositions(mesh, trial);
       const std::size_t trialInverted = repairFlippedElements(trial, dv);
-      if (trialInverted >= inverted) break;
+      if (trialInverted >= inverted || needingRepair(trial) > needingRepair(mesh)) break;
+      // Counts of the kept mesh, except those of the whole history: inverted
+      // before any repair, relabelled cells, and node moves and polygon
+      // re-triangulations summed over the passes kept.
       PairMeshCounts& c = trial.counts;
       c.invertedBeforeRepair = mesh.counts.invertedBeforeRepair;
       c.relabelledFlatCells = relabelled;
       c.relabelledBoundaryCells = mesh.counts.relabelledBoundaryCells + cells.size();
-      c.weldedNodes += mesh.counts.weldedNodes;
       c.movedNodes += mesh.counts.movedNodes;
       c.retriangulatedPolygons += mesh.counts.retriangulatedPolygons;
       trial.seconds = mesh.seconds;
       mesh = std::move(trial);
       inner = std::move(trialInner);
       inverted = trialInverted;
+      removed += volume;
     }
   } else {
     std::size_t negative = 0;

@@ -40,8 +40,20 @@ bool edgesStayManifold(const DelaunayVoronoi& dv, const std::vector<std::uint8_t
   return true;
 }
 
-// The inner cells around the cell's edges that are cut off from the largest
-// run of inner cells around the same edge (what makes the edge non-manifold).
+// The angle a cell takes up around its edge (u, v).
+double dihedralAngle(const DelaunayVoronoi& dv, Index id, const DelaunayVoronoi::Vertex_handle& u,
+                     const DelaunayVoronoi::Vertex_handle& v) {
+  const auto c = dv.cell(id);
+  DelaunayVoronoi::Vertex_handle other[2];
+  int k = 0;
+  for (int i = 0; i < 4; ++i)
+    if (c->vertex(i) != u && c->vertex(i) != v) other[k++] = c->vertex(i);
+  return std::abs(CGAL::approximate_dihedral_angle(u->point(), v->point(), other[0]->point(), other[1]->point()));
+}
+
+// The inner cells around the cell's edges that are cut off from the widest
+// run (by angle) of inner cells around the same edge: what makes the edge
+// non-manifold once the cell is outer.
 void cutOffRuns(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, Index id, std::vector<Index>& out) {
   const auto& dt = dv.triangulation();
   const auto c = dv.cell(id);
@@ -53,27 +65,31 @@ void cutOffRuns(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inne
       const auto start = circ;
       do ring.push_back(DelaunayVoronoi::cellId(circ));
       while (++circ != start);
-      // Rotate so that the ring starts with an outer cell (the flipped one is).
+      // Start the ring at an outer cell (there is one: the cell itself).
       const auto firstOuter = std::find_if(ring.begin(), ring.end(), [&](Index r) { return !isInner(dv, inner, r); });
       std::rotate(ring.begin(), firstOuter, ring.end());
-      std::vector<std::pair<std::size_t, std::size_t>> runs;  // [begin, end)
+      struct Run {
+        std::size_t begin, end;
+        double angle;
+      };
+      std::vector<Run> runs;
       for (std::size_t k = 0; k < ring.size();) {
         if (!isInner(dv, inner, ring[k])) {
           ++k;
           continue;
         }
-        std::size_t e = k;
-        while (e < ring.size() && isInner(dv, inner, ring[e])) ++e;
-        runs.push_back({k, e});
-        k = e;
+        Run run{k, k, 0};
+        while (run.end < ring.size() && isInner(dv, inner, ring[run.end]))
+          run.angle += dihedralAngle(dv, ring[run.end++], c->vertex(i), c->vertex(j));
+        runs.push_back(run);
+        k = run.end;
       }
       if (runs.size() < 2) continue;
-      const auto longest = std::max_element(runs.begin(), runs.end(), [](const auto& x, const auto& y) {
-        return x.second - x.first < y.second - y.first;
-      });
+      const auto widest =
+          std::max_element(runs.begin(), runs.end(), [](const Run& x, const Run& y) { return x.angle < y.angle; });
       for (auto r = runs.begin(); r != runs.end(); ++r)
-        if (r != longest)
-          for (std::size_t k = r->first; k < r->second; ++k) out.push_back(ring[k]);
+        if (r != widest)
+          for (std::size_t k = r->begin; k < r->end; ++k) out.push_back(ring[k]);
     }
 }
 
@@ -91,29 +107,43 @@ std::vector<Index> boundaryCellsOfInvertedElements(const DelaunayVoronoi& dv, co
   std::sort(cells.begin(), cells.end());
   cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
   // All together: a run of cells around an edge can only go as a whole.
+  // Each candidate is the seed of a group: itself and the runs of inner
+  // cells it cuts off around its edges (the thin tip of a sliver wedge beyond
+  // it), grown while the total stays within the bound.
   std::vector<std::uint8_t> trial = inner;
   for (Index id : cells) trial[id] = 0;
-  // The runs of inner cells they cut off around an edge go too (the thin tip
-  // of a sliver wedge beyond them), up to a bound.
+  std::vector<Index> group(cells.size());
+  for (std::size_t k = 0; k < cells.size(); ++k) group[k] = static_cast<Index>(k);
   const std::size_t limit = 4 * cells.size() + 64;
-  for (std::size_t checked = 0; checked < cells.size() && cells.size() <= limit; ++checked) {
+  for (std::size_t checked = 0; checked < cells.size(); ++checked) {
     std::vector<Index> more;
     cutOffRuns(dv, trial, cells[checked], more);
     for (Index id : more)
-      if (trial[id]) {
+      if (trial[id] && cells.size() < limit) {
         trial[id] = 0;
         cells.push_back(id);
+        group.push_back(group[checked]);
       }
   }
-  // Those still with a non-manifold edge go back, until none is left.
-  for (std::size_t before = cells.size() + 1; cells.size() < before;) {
-    before = cells.size();
-    std::vector<Index> kept;
-    for (Index id : cells)
-      if (edgesStayManifold(dv, trial, id)) kept.push_back(id);
-    for (Index id : cells) trial[id] = inner[id];
-    for (Index id : kept) trial[id] = 0;
-    cells = std::move(kept);
+  // A group with a cell that still leaves a non-manifold edge goes back as a
+  // whole (its cut-off cells fix nothing without it), until none is left.
+  for (bool dropped = true; dropped;) {
+    dropped = false;
+    std::vector<std::uint8_t> dropGroup(group.size(), 0);
+    for (std::size_t k = 0; k < cells.size(); ++k)
+      if (!edgesStayManifold(dv, trial, cells[k])) dropGroup[group[k]] = 1;
+    std::vector<Index> keptCells, keptGroups;
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      if (dropGroup[group[k]]) {
+        trial[cells[k]] = inner[cells[k]];
+        dropped = true;
+      } else {
+        keptCells.push_back(cells[k]);
+        keptGroups.push_back(group[k]);
+      }
+    }
+    cells = std::move(keptCells);
+    group = std::move(keptGroups);
   }
   std::sort(cells.begin(), cells.end());
   return cells;

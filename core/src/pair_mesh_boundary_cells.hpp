@@ -16,9 +16,10 @@ namespace cadmedial {
 // fold their nodes could not leave goes with them. Where that would leave
 // inner cells around one of their edges in two runs (a non-manifold edge:
 // the cells sit across a wedge thinner than the sampling, e.g. a cylinder
-// tangent to a plane), the runs cut off from the largest go too, up to
-// 4 × (cells) + 64 cells; cells still leaving a non-manifold edge are
-// dropped. Vertices are not checked. Sorted, each cell once.
+// tangent to a plane), the runs cut off from the widest one (by angle) go
+// too, up to 4 × (cells) + 64 cells in all. A cell with the runs it cut off
+// goes back when one of them would still leave a non-manifold edge.
+// Vertices are not checked. Sorted, each cell once.
 std::vector<Index> boundaryCellsOfInvertedElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
                                                    const PairMesh& mesh);
 

@@ -200,11 +200,16 @@ class EdgeSplitter {
     // edge and the cut face, the face is just beyond it.
     static constexpr double kSteps[] = {0.05, 0.1, 0.2, 0.35, 0.5, 0.7, 0.9, 1.02, 1.1, 1.25};
     const double dx = pa[0] - pb[0], dy = pa[1] - pb[1], dz = pa[2] - pb[2];
-    const double tooClose = 1e-6 * (dx * dx + dy * dy + dz * dz);  // (1e-3 of the edge)^2
+    const double length2 = dx * dx + dy * dy + dz * dz;
+    const double tooClose = 1e-6 * length2;  // (1e-3 of the edge)^2
     std::vector<Vec3> out;
     for (double s : kSteps)
       for (const Vec3& q : targets) {
         const Vec3 c{mid[0] + s * (q[0] - mid[0]), mid[1] + s * (q[1] - mid[1]), mid[2] + s * (q[2] - mid[2])};
+        // The boundary is bent at c: no farther from the edge's midpoint than
+        // the edge is long (a chain node of a flat cell can be anywhere).
+        const double fx = c[0] - mid[0], fy = c[1] - mid[1], fz = c[2] - mid[2];
+        if (fx * fx + fy * fy + fz * fz > length2) continue;
         bool onChain = false;
         for (Index v : chain) {
           const double x = c[0] - m_.nodes[v][0], y = c[1] - m_.nodes[v][1], z = c[2] - m_.nodes[v][2];

@@ -59,7 +59,9 @@ struct PairMeshCounts {
   // Last resort: inner cells on the boundary whose Voronoi node was a corner
   // of an element the repair left inverted, relabelled outer (the boundary
   // then runs over their other facets) when the rebuilt, repaired mesh has
-  // fewer inverted elements.
+  // fewer inverted elements. movedNodes and retriangulatedPolygons are then
+  // summed over the repairs of the meshes kept; the other counts are those
+  // of the final mesh (invertedBeforeRepair: of the first).
   std::size_t relabelledBoundaryCells = 0;
   std::size_t invertedAfterRepair = 0;
 };
