@@ -292,7 +292,7 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
     // repaired. Kept only when fewer elements stay inverted and no more need
     // repair (flat ones included), and when the cells taken out hold at most
     // 1e-3 of the enclosed volume.
-    const double budget = 1e-3 * std::abs(checkPairMesh(mesh).enclosedVolume);
+    const double budget = inverted > 0 ? 1e-3 * std::abs(checkPairMesh(mesh).enclosedVolume) : 0;
     double removed = 0;
     for (int pass = 0; pass < 3 && inverted > 0; ++pass) {
       const std::vector<Index> cells = boundaryCellsOfInvertedElements(dv, inner, mesh);

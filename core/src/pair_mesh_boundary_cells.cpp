@@ -1,6 +1,7 @@
 #include "pair_mesh_boundary_cells.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 
 namespace cadmedial {
@@ -112,8 +113,9 @@ std::vector<Index> boundaryCellsOfInvertedElements(const DelaunayVoronoi& dv, co
   // it), grown while the total stays within the bound.
   std::vector<std::uint8_t> trial = inner;
   for (Index id : cells) trial[id] = 0;
-  std::vector<Index> group(cells.size());
-  for (std::size_t k = 0; k < cells.size(); ++k) group[k] = static_cast<Index>(k);
+  const std::size_t seeds = cells.size();
+  std::vector<Index> group(seeds);  // per cell: the seed it was grown from
+  for (std::size_t k = 0; k < seeds; ++k) group[k] = static_cast<Index>(k);
   const std::size_t limit = 4 * cells.size() + 64;
   for (std::size_t checked = 0; checked < cells.size(); ++checked) {
     std::vector<Index> more;
@@ -129,7 +131,7 @@ std::vector<Index> boundaryCellsOfInvertedElements(const DelaunayVoronoi& dv, co
   // whole (its cut-off cells fix nothing without it), until none is left.
   for (bool dropped = true; dropped;) {
     dropped = false;
-    std::vector<std::uint8_t> dropGroup(group.size(), 0);
+    std::vector<std::uint8_t> dropGroup(seeds, 0);
     for (std::size_t k = 0; k < cells.size(); ++k)
       if (!edgesStayManifold(dv, trial, cells[k])) dropGroup[group[k]] = 1;
     std::vector<Index> keptCells, keptGroups;

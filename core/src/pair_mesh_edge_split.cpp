@@ -205,11 +205,14 @@ class EdgeSplitter {
     std::vector<Vec3> out;
     for (double s : kSteps)
       for (const Vec3& q : targets) {
-        const Vec3 c{mid[0] + s * (q[0] - mid[0]), mid[1] + s * (q[1] - mid[1]), mid[2] + s * (q[2] - mid[2])};
         // The boundary is bent at c: no farther from the edge's midpoint than
-        // the edge is long (a chain node of a flat cell can be anywhere).
-        const double fx = c[0] - mid[0], fy = c[1] - mid[1], fz = c[2] - mid[2];
-        if (fx * fx + fy * fy + fz * fz > length2) continue;
+        // the edge is long (a chain node of a flat cell can be anywhere, and
+        // on a thick part the chain is many edge lengths away): the step is
+        // shortened to that.
+        const double qx = q[0] - mid[0], qy = q[1] - mid[1], qz = q[2] - mid[2];
+        const double far = std::sqrt(qx * qx + qy * qy + qz * qz);
+        const double step = far > 0 ? std::min(s, std::sqrt(length2) / far) : s;
+        const Vec3 c{mid[0] + step * qx, mid[1] + step * qy, mid[2] + step * qz};
         bool onChain = false;
         for (Index v : chain) {
           const double x = c[0] - m_.nodes[v][0], y = c[1] - m_.nodes[v][1], z = c[2] - m_.nodes[v][2];

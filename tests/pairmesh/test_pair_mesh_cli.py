@@ -150,7 +150,7 @@ class PairMeshCli(unittest.TestCase):
             self.check_model(model)
         # Two last-resort steps are exercised here: the boundary-edge split
         # (seed 003 §4.1, second case; the plate and face_recognition parts
-        # need it) and the boundary-cell relabelling (pmi1 2 cells, lever 86;
+        # need it) and the boundary-cell relabelling (pmi1 2 cells, lever 89;
         # without it they keep 2 and 34 inverted elements).
         splits = relabelled = 0
         for summary in glob.glob(os.path.join(self.tmp, "*", "solid_*", "summary.json")):
