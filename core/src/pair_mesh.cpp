@@ -242,12 +242,6 @@ class Builder {
   PairMesh m_;
 };
 
-std::size_t needingRepair(const PairMesh& m) {
-  std::size_t n = 0;
-  for (const auto& t : m.tets) n += elementNeedsRepair(m.nodes, t) ? 1 : 0;
-  return n;
-}
-
 // The Voronoi nodes of `rebuilt` take the positions the repair gave the
 // nodes of the same cells in `repaired`: only the elements around the
 // relabelled cells are left to repair.
@@ -305,7 +299,9 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
       PairMesh trial = Builder(dv, samples, trialInner, innerAxis).build();
       keepRepairedPositions(mesh, trial);
       const std::size_t trialInverted = repairFlippedElements(trial, dv);
-      if (trialInverted >= inverted || needingRepair(trial) > needingRepair(mesh)) break;
+      if (trialInverted >= inverted ||
+          countElementsNeedingRepair(trial.nodes, trial.tets) > countElementsNeedingRepair(mesh.nodes, mesh.tets))
+        break;
       // Counts of the kept mesh, except those of the whole history: inverted
       // before any repair, relabelled cells, and node moves and polygon
       // re-triangulations summed over the passes kept.

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-
+#include <utility>
 
 namespace cadmedial {
 
@@ -19,25 +19,40 @@ bool onBoundary(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inne
   return false;
 }
 
+// The cells around the cell's edge (i, j), starting at an outer one when
+// there is one, and the runs [begin, end) of inner cells among them.
+struct EdgeRing {
+  std::vector<Index> cells;
+  std::vector<std::pair<std::size_t, std::size_t>> runs;
+};
+EdgeRing innerRunsAround(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, Index id, int i, int j) {
+  EdgeRing ring;
+  auto circ = dv.triangulation().incident_cells(dv.cell(id), i, j);
+  const auto start = circ;
+  do ring.cells.push_back(DelaunayVoronoi::cellId(circ));
+  while (++circ != start);
+  const auto firstOuter =
+      std::find_if(ring.cells.begin(), ring.cells.end(), [&](Index r) { return !isInner(dv, inner, r); });
+  std::rotate(ring.cells.begin(), firstOuter, ring.cells.end());
+  for (std::size_t k = 0; k < ring.cells.size();) {
+    if (!isInner(dv, inner, ring.cells[k])) {
+      ++k;
+      continue;
+    }
+    std::size_t e = k;
+    while (e < ring.cells.size() && isInner(dv, inner, ring.cells[e])) ++e;
+    ring.runs.push_back({k, e});
+    k = e;
+  }
+  return ring;
+}
+
 // With `inner` as given, every edge of the cell has at most one run of inner
 // cells around it (a manifold boundary along it).
 bool edgesStayManifold(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, Index id) {
-  const auto& dt = dv.triangulation();
-  const auto c = dv.cell(id);
   for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) {
-      auto circ = dt.incident_cells(c, i, j);
-      const auto start = circ;
-      int changes = 0;
-      bool previous = isInner(dv, inner, DelaunayVoronoi::cellId(start));
-      do {
-        ++circ;
-        const bool now = isInner(dv, inner, DelaunayVoronoi::cellId(circ));
-        changes += now != previous ? 1 : 0;
-        previous = now;
-      } while (circ != start);
-      if (changes > 2) return false;
-    }
+    for (int j = i + 1; j < 4; ++j)
+      if (innerRunsAround(dv, inner, id, i, j).runs.size() > 1) return false;
   return true;
 }
 
@@ -56,41 +71,19 @@ double dihedralAngle(const DelaunayVoronoi& dv, Index id, const DelaunayVoronoi:
 // run (by angle) of inner cells around the same edge: what makes the edge
 // non-manifold once the cell is outer.
 void cutOffRuns(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, Index id, std::vector<Index>& out) {
-  const auto& dt = dv.triangulation();
   const auto c = dv.cell(id);
-  std::vector<Index> ring;
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) {
-      ring.clear();
-      auto circ = dt.incident_cells(c, i, j);
-      const auto start = circ;
-      do ring.push_back(DelaunayVoronoi::cellId(circ));
-      while (++circ != start);
-      // Start the ring at an outer cell (there is one: the cell itself).
-      const auto firstOuter = std::find_if(ring.begin(), ring.end(), [&](Index r) { return !isInner(dv, inner, r); });
-      std::rotate(ring.begin(), firstOuter, ring.end());
-      struct Run {
-        std::size_t begin, end;
-        double angle;
-      };
-      std::vector<Run> runs;
-      for (std::size_t k = 0; k < ring.size();) {
-        if (!isInner(dv, inner, ring[k])) {
-          ++k;
-          continue;
-        }
-        Run run{k, k, 0};
-        while (run.end < ring.size() && isInner(dv, inner, ring[run.end]))
-          run.angle += dihedralAngle(dv, ring[run.end++], c->vertex(i), c->vertex(j));
-        runs.push_back(run);
-        k = run.end;
-      }
-      if (runs.size() < 2) continue;
-      const auto widest =
-          std::max_element(runs.begin(), runs.end(), [](const Run& x, const Run& y) { return x.angle < y.angle; });
-      for (auto r = runs.begin(); r != runs.end(); ++r)
+      const EdgeRing ring = innerRunsAround(dv, inner, id, i, j);
+      if (ring.runs.size() < 2) continue;
+      std::vector<double> angle(ring.runs.size(), 0);
+      for (std::size_t r = 0; r < ring.runs.size(); ++r)
+        for (std::size_t k = ring.runs[r].first; k < ring.runs[r].second; ++k)
+          angle[r] += dihedralAngle(dv, ring.cells[k], c->vertex(i), c->vertex(j));
+      const std::size_t widest = std::max_element(angle.begin(), angle.end()) - angle.begin();
+      for (std::size_t r = 0; r < ring.runs.size(); ++r)
         if (r != widest)
-          for (std::size_t k = r->begin; k < r->end; ++k) out.push_back(ring[k]);
+          for (std::size_t k = ring.runs[r].first; k < ring.runs[r].second; ++k) out.push_back(ring.cells[k]);
     }
 }
 

@@ -5,15 +5,23 @@
 namespace cadmedial {
 
 bool elementNeedsRepair(const std::vector<Vec3>& nodes, const std::array<Index, 4>& t) {
-  // Two coincident corners (welded Voronoi nodes) make the element exactly
-  // flat: tested first, because the orientation predicate would fall back
-  // to exact arithmetic on every such element.
-  for (int a = 0; a < 4; ++a)
-    for (int b = a + 1; b < 4; ++b)
-      if (nodes[t[a]] == nodes[t[b]]) return false;
+  if (hasCoincidentCorners(nodes, t)) return false;
   using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
   auto point = [&](Index n) { return Point(nodes[n][0], nodes[n][1], nodes[n][2]); };
   return CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3])) != CGAL::POSITIVE;
+}
+
+std::size_t countElementsNeedingRepair(const std::vector<Vec3>& nodes, const std::vector<std::array<Index, 4>>& tets) {
+  std::size_t bad = 0;
+  for (const auto& t : tets) bad += elementNeedsRepair(nodes, t) ? 1 : 0;
+  return bad;
+}
+
+bool hasCoincidentCorners(const std::vector<Vec3>& nodes, const std::array<Index, 4>& t) {
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b)
+      if (nodes[t[a]] == nodes[t[b]]) return true;
+  return false;
 }
 
 double signedTetVolume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {

@@ -14,6 +14,14 @@ namespace cadmedial {
 // coincident corners (welded Voronoi nodes) cut to nothing and are fine.
 bool elementNeedsRepair(const std::vector<Vec3>& nodes, const std::array<Index, 4>& tet);
 
+// Elements needing repair among `tets`.
+std::size_t countElementsNeedingRepair(const std::vector<Vec3>& nodes, const std::vector<std::array<Index, 4>>& tets);
+
+// Two corners at the same position (welded Voronoi nodes): exactly flat.
+// Tested before an orientation predicate, which would go to exact
+// arithmetic on every such element.
+bool hasCoincidentCorners(const std::vector<Vec3>& nodes, const std::array<Index, 4>& tet);
+
 // Signed volume of the tetrahedron (positive = valid orientation), in doubles.
 double signedTetVolume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 

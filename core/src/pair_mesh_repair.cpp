@@ -37,10 +37,7 @@ double tetVolume(const PairMesh& m, std::size_t i) {
 bool isInverted(const PairMesh& m, std::size_t i) {
   using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
   const auto& t = m.tets[i];
-  // Coincident corners: exactly flat (and the predicate would go exact).
-  for (int a = 0; a < 4; ++a)
-    for (int b = a + 1; b < 4; ++b)
-      if (m.nodes[t[a]] == m.nodes[t[b]]) return false;
+  if (hasCoincidentCorners(m.nodes, t)) return false;
   auto point = [&](Index n) { return Point(m.nodes[n][0], m.nodes[n][1], m.nodes[n][2]); };
   return CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3])) == CGAL::NEGATIVE;
 }
@@ -60,12 +57,6 @@ double negligibleVolume(const PairMesh& m, std::size_t i) {
 }
 
 namespace {
-
-std::size_t countNeedingRepair(const PairMesh& m) {
-  std::size_t bad = 0;
-  for (std::size_t i = 0; i < m.tets.size(); ++i) bad += needsRepair(m, i) ? 1 : 0;
-  return bad;
-}
 
 std::size_t countNegative(const PairMesh& m) {
   std::size_t bad = 0;
@@ -273,7 +264,7 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
   if (bad > 0) {
     if (const std::size_t changed = retriangulateFaceVertexPolygons(m, &badFlag)) {
       m.counts.retriangulatedPolygons += changed;
-      bad = countNeedingRepair(m);
+      bad = countElementsNeedingRepair(m.nodes, m.tets);
     }
   }
   return bad;
