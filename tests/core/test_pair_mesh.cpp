@@ -15,6 +15,7 @@
 #include "cadmedial/compute_medial.hpp"
 #include "cadmedial/medial.hpp"
 #include "cadmedial/pair_mesh.hpp"
+#include "mesh_sets.hpp"
 #include "synthetic_samples.hpp"
 
 using namespace cadmedial;
@@ -27,16 +28,6 @@ std::vector<std::uint8_t> exactLabels(const DelaunayVoronoi& dv, const std::func
   for (Index c = 0; c < dv.cellCount(); ++c)
     if (!dv.isInfinite(c)) inner[c] = inside(dv.circumcenter(c)) ? 1 : 0;
   return inner;
-}
-
-// Triangles up to rotation of their vertex order (orientation kept).
-std::multiset<std::array<Index, 3>> orientedSet(const std::vector<std::array<Index, 3>>& tris) {
-  std::multiset<std::array<Index, 3>> out;
-  for (auto t : tris) {
-    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-    out.insert(t);
-  }
-  return out;
 }
 
 // Every directed edge matched by its reverse: closed and consistently oriented.

@@ -1,0 +1,436 @@
+#include "pair_mesh_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <tuple>
+#include <unordered_map>
+
+namespace cadmedial {
+
+namespace {
+
+// Local vertex pairs of the six edges of a cell, and the edge of a pair.
+constexpr int kEdgeI[6] = {0, 0, 0, 1, 1, 2};
+constexpr int kEdgeJ[6] = {1, 2, 3, 2, 3, 3};
+constexpr int kEdgeOf[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
+
+// Only the relabelled cells' own Voronoi nodes go; the others keep their
+// order (sample nodes, then Voronoi nodes by cell id, then split nodes).
+void dropNodes(PairMesh& m, const std::vector<std::uint8_t>& drop) {
+  std::vector<Index> renumber(m.nodes.size(), kNoIndex);
+  Index next = 0;
+  for (Index n = 0; n < m.nodes.size(); ++n) {
+    if (drop[n]) continue;
+    renumber[n] = next;
+    m.nodes[next] = m.nodes[n];
+    m.nodeCell[next] = m.nodeCell[n];
+    m.boundaryNode[next] = m.boundaryNode[n];
+    ++next;
+  }
+  m.nodes.resize(next);
+  m.nodeCell.resize(next);
+  m.boundaryNode.resize(next);
+  for (auto& t : m.tets)
+    for (Index& v : t) v = renumber[v];
+}
+
+}  // namespace
+
+PairMeshBuilder::PairMeshBuilder(const DelaunayVoronoi& dv, const SampleSet& samples, const MedialComplex* axis)
+    : dv_(dv), dt_(dv.triangulation()), samples_(samples) {
+  sheetCells_.assign(dv.cellCount(), 0);
+  if (!axis) return;
+  sheetFacetEdges_.reserve(axis->polygonCount());
+  sheetVoronoiEdges_.reserve(axis->polygonVertices.size());
+  for (std::size_t p = 0; p < axis->polygonCount(); ++p) {
+    if (axis->provenance[p] == PolygonProvenance::DelaunayEdgeFacet)
+      sheetFacetEdges_.insert(axis->provenanceSamples[p][0], axis->provenanceSamples[p][1], 1);
+    const Index b = axis->polygonOffsets[p], e = axis->polygonOffsets[p + 1];
+    for (Index k = b; k < e; ++k) {
+      const Index c = axis->vertexCell[axis->polygonVertices[k]];
+      const Index d = axis->vertexCell[axis->polygonVertices[k + 1 < e ? k + 1 : b]];
+      if (c != kNoIndex && c < dv.cellCount()) sheetCells_[c] = 1;
+      if (c != kNoIndex && d != kNoIndex) sheetVoronoiEdges_.insert(c, d, 1);
+    }
+  }
+}
+
+PairMesh PairMeshBuilder::build(const std::vector<std::uint8_t>& inner) {
+  if (inner.size() != dv_.cellCount()) throw std::invalid_argument("pair-mesh: one inner label per cell needed");
+  PairMesh m;
+  inner_ = &inner;
+  m_ = &m;
+  m.nodes = samples_.points;
+  m.sampleNodes = samples_.points.size();
+  m.spacing = samples_.spacing;
+  m.nodeCell.assign(m.sampleNodes, kNoIndex);
+  m.boundaryNode.assign(m.sampleNodes, 1);
+  nodeOfCell_.assign(dv_.cellCount(), kNoIndex);
+  for (Index c = 0; c < dv_.cellCount(); ++c)
+    if (isInner(c)) {
+      nodeOfCell_[c] = static_cast<Index>(m.nodes.size());
+      m.nodes.push_back(dv_.circumcenter(c));
+      m.nodeCell.push_back(c);
+      m.boundaryNode.push_back(0);
+      ++m.counts.innerCells;
+    }
+  weldNearlyCoincidentVoronoiNodes();
+  if (dv_.dimension() == 3) {
+    edgeElements();
+    vertexFaceElements();
+  }
+  m_ = nullptr;
+  inner_ = nullptr;
+  return m;
+}
+
+bool PairMeshBuilder::relabelOuter(PairMesh& mesh, const std::vector<std::uint8_t>& after,
+                                   const std::vector<Index>& cells) {
+  if (after.size() != dv_.cellCount()) throw std::invalid_argument("pair-mesh: one inner label per cell needed");
+  if (cells.empty() || dv_.dimension() != 3) return true;
+  std::vector<std::uint8_t> gone(dv_.cellCount(), 0);
+  for (Index c : cells) {
+    if (dv_.isInfinite(c) || after[c] != 0) throw std::invalid_argument("pair-mesh: relabelled cells must be finite and outer");
+    gone[c] = 1;
+  }
+  // The Delaunay edges of the cells (sample pairs), each once, with a cell
+  // and local edge to circulate from.
+  PairTable edges;
+  edges.reserve(6 * cells.size());
+  std::vector<std::pair<Index, int>> edgeStarts;
+  for (Index c : cells)
+    for (int e = 0; e < 6; ++e) {
+      const Index a = dv_.cell(c)->vertex(kEdgeI[e])->info(), b = dv_.cell(c)->vertex(kEdgeJ[e])->info();
+      const Index id = static_cast<Index>(edgeStarts.size());
+      if (edges.insert(a, b, id) == id) edgeStarts.push_back({c, e});
+    }
+  // A split edge (a -> m -> b, by a repair) among them is undone: its
+  // Edge-Edge halves and the Vertex-Face polygons through m go, the boundary
+  // facets on ab of cells that stay inner get their one Vertex-Face element
+  // back, and so does ab its Edge-Edge elements. A restored facet with a
+  // split on another of its edges has that split undone too (the repair may
+  // split them again). The sample edge of a split node: the samples reached
+  // through the ends of its Edge-Edge halves; an edge split twice cannot be
+  // undone here, and then the mesh is left alone for the caller to rebuild.
+  std::unordered_map<Index, std::vector<Index>> splitEnds;
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    if (mesh.type[i] != PairElementType::EdgeEdge) continue;
+    const Index p = mesh.tets[i][0], q = mesh.tets[i][1];
+    if (!mesh.isSampleNode(p)) splitEnds[p].push_back(q);
+    if (!mesh.isSampleNode(q)) splitEnds[q].push_back(p);
+  }
+  struct Split {
+    std::array<Index, 2> edge;  // samples
+    bool once;                  // not split again
+  };
+  std::unordered_map<Index, Split> splits;
+  PairTable splitNodeOfEdge;
+  splitNodeOfEdge.reserve(splitEnds.size());
+  std::vector<Index> toUndo;
+  for (const auto& [split, ends] : splitEnds) {
+    std::vector<Index> stack{split}, seen{split}, samples;
+    while (!stack.empty()) {
+      const Index s = stack.back();
+      stack.pop_back();
+      const auto it = splitEnds.find(s);
+      if (it == splitEnds.end()) return false;
+      for (Index u : it->second) {
+        if (std::find(seen.begin(), seen.end(), u) != seen.end()) continue;
+        seen.push_back(u);
+        if (mesh.isSampleNode(u)) samples.push_back(u);
+        else stack.push_back(u);
+      }
+    }
+    if (samples.size() != 2) return false;
+    splits[split] = {{samples[0], samples[1]}, seen.size() == 3};
+    splitNodeOfEdge.insert(samples[0], samples[1], split);
+    if (edges.find(samples[0], samples[1]) != kNoIndex) toUndo.push_back(split);
+  }
+  auto innerBefore = [&](Index c) { return isInnerIn(after, c) || gone[c]; };
+  std::vector<std::uint8_t> undoneNode(mesh.nodes.size(), 0);
+  std::vector<std::pair<Index, int>> restoredFacets;  // (cell, local vertex opposite)
+  std::vector<std::array<Index, 3>> restoredCorners;  // the same facets' samples, sorted
+  std::vector<std::tuple<Cell_handle, int, int>> restoredEdges;  // undone edges that are not the cells' own
+  std::vector<Cell_handle> ring;
+  for (std::size_t next = 0; next < toUndo.size(); ++next) {
+    const Index split = toUndo[next];
+    if (undoneNode[split]) continue;
+    const Split& info = splits.at(split);
+    if (!info.once) return false;
+    undoneNode[split] = 1;
+    Cell_handle start;
+    int i = 0, j = 0;
+    if (!dt_.is_edge(dv_.vertex(info.edge[0]), dv_.vertex(info.edge[1]), start, i, j)) return false;
+    if (edges.find(info.edge[0], info.edge[1]) == kNoIndex) restoredEdges.emplace_back(start, i, j);
+    cellsAroundEdge(start, i, j, ring);
+    for (const Cell_handle& c : ring) {
+      const Index id = DelaunayVoronoi::cellId(c);
+      if (!isInnerIn(after, id)) continue;
+      for (int w = 0; w < 4; ++w) {  // the facets on ab: opposite the two other vertices
+        const Index sample = c->vertex(w)->info();
+        if (sample == info.edge[0] || sample == info.edge[1] || innerBefore(DelaunayVoronoi::cellId(c->neighbor(w))))
+          continue;
+        if (std::find(restoredFacets.begin(), restoredFacets.end(), std::make_pair(id, w)) != restoredFacets.end())
+          continue;
+        std::array<Index, 3> corners{};
+        int k = 0;
+        for (int u = 0; u < 4; ++u)
+          if (u != w) corners[k++] = c->vertex(u)->info();
+        for (int e = 0; e < 3; ++e)  // splits on the facet's other edges
+          if (const Index other = splitNodeOfEdge.find(corners[e], corners[(e + 1) % 3]); other != kNoIndex)
+            toUndo.push_back(other);
+        std::sort(corners.begin(), corners.end());
+        restoredFacets.push_back({id, w});
+        restoredCorners.push_back(corners);
+      }
+    }
+  }
+  std::unordered_map<Index, std::vector<std::array<Index, 3>>> restoredOf;
+  for (std::size_t k = 0; k < restoredFacets.size(); ++k)
+    restoredOf[restoredFacets[k].first].push_back(restoredCorners[k]);
+
+  // Out: the elements of those edges and split nodes, the cells'
+  // Vertex-Face elements and those of the restored facets.
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    const auto& t = mesh.tets[i];
+    bool drop = false;
+    for (Index v : t) drop = drop || undoneNode[v] != 0;
+    switch (mesh.type[i]) {
+      case PairElementType::FaceVertex:
+        drop = drop || edges.find(mesh.medialSimplex[i][0], mesh.medialSimplex[i][1]) != kNoIndex;
+        break;
+      case PairElementType::EdgeEdge:
+        drop = drop || (mesh.isSampleNode(t[0]) && mesh.isSampleNode(t[1]) && edges.find(t[0], t[1]) != kNoIndex);
+        break;
+      case PairElementType::VertexFace: {
+        const Index c = mesh.medialSimplex[i][0];
+        drop = drop || gone[c] != 0;
+        const auto it = restoredOf.find(c);
+        if (!drop && it != restoredOf.end()) {
+          std::array<Index, 3> corners{t[1], t[2], t[3]};
+          std::sort(corners.begin(), corners.end());
+          drop = std::find(it->second.begin(), it->second.end(), corners) != it->second.end();
+        }
+        break;
+      }
+    }
+    if (drop) continue;
+    mesh.tets[out] = mesh.tets[i];
+    mesh.type[out] = mesh.type[i];
+    mesh.medialSimplex[out] = mesh.medialSimplex[i];
+    mesh.boundarySimplex[out] = mesh.boundarySimplex[i];
+    mesh.onSheets[out] = mesh.onSheets[i];
+    ++out;
+  }
+  mesh.tets.resize(out);
+  mesh.type.resize(out);
+  mesh.medialSimplex.resize(out);
+  mesh.boundarySimplex.resize(out);
+  mesh.onSheets.resize(out);
+
+  // In: the same edges' elements and the new boundary facets' Vertex-Face
+  // elements under the new labels, on the nodes where they are.
+  inner_ = &after;
+  m_ = &mesh;
+  nodeOfCell_.assign(dv_.cellCount(), kNoIndex);
+  for (Index n = 0; n < mesh.nodes.size(); ++n)
+    if (mesh.nodeCell[n] != kNoIndex) nodeOfCell_[mesh.nodeCell[n]] = n;
+  for (const auto& [c, e] : edgeStarts) {
+    const Cell_handle cell = dv_.cell(c);
+    cellsAroundEdge(cell, kEdgeI[e], kEdgeJ[e], ring);
+    edge(cell->vertex(kEdgeI[e]), cell->vertex(kEdgeJ[e]), ring);
+  }
+  for (const auto& [cell, i, j] : restoredEdges) {
+    cellsAroundEdge(cell, i, j, ring);
+    edge(cell->vertex(i), cell->vertex(j), ring);
+  }
+  for (Index c : cells)
+    for (int i = 0; i < 4; ++i) {
+      const Cell_handle n = dv_.cell(c)->neighbor(i);
+      const Index id = DelaunayVoronoi::cellId(n);
+      if (isInner(id)) vertexFace(id, n->index(dv_.cell(c)));
+    }
+  for (const auto& [c, w] : restoredFacets) vertexFace(c, w);
+  m_ = nullptr;
+  inner_ = nullptr;
+
+  std::vector<std::uint8_t> dropNode(mesh.nodes.size(), 0);
+  for (Index n = 0; n < mesh.nodes.size(); ++n)
+    dropNode[n] = undoneNode[n] || (mesh.nodeCell[n] != kNoIndex && gone[mesh.nodeCell[n]]);
+  dropNodes(mesh, dropNode);
+  mesh.boundaryTriangles.clear();
+  PairMeshCounts& k = mesh.counts;
+  k.faceVertex = k.edgeEdge = k.vertexFace = 0;
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    switch (mesh.type[i]) {
+      case PairElementType::FaceVertex: ++k.faceVertex; break;
+      case PairElementType::EdgeEdge: ++k.edgeEdge; break;
+      case PairElementType::VertexFace:
+        ++k.vertexFace;
+        mesh.boundaryTriangles.push_back({mesh.tets[i][1], mesh.tets[i][2], mesh.tets[i][3]});
+        break;
+    }
+  }
+  k.boundaryTriangles = mesh.boundaryTriangles.size();
+  k.innerCells -= cells.size();
+  return true;
+}
+
+void PairMeshBuilder::add(PairElementType t, std::array<Index, 4> tet, std::array<Index, 2> medial,
+                          std::array<Index, 3> boundary, bool onSheets) {
+  m_->tets.push_back(tet);
+  m_->type.push_back(t);
+  m_->medialSimplex.push_back(medial);
+  m_->boundarySimplex.push_back(boundary);
+  m_->onSheets.push_back(onSheets ? 1 : 0);
+}
+
+void PairMeshBuilder::cellsAroundEdge(Cell_handle c, int i, int j, std::vector<Cell_handle>& ring) const {
+  ring.clear();
+  auto circ = dt_.incident_cells(c, i, j);
+  const auto start = circ;
+  do {
+    ring.push_back(circ);
+    ++circ;
+  } while (circ != start);
+}
+
+// Face-Vertex (interior edge) or Edge-Edge (boundary edge) elements of every
+// Delaunay edge with an inner cell around it, each edge visited once (a bit
+// per local edge), from the inner cell of lowest id.
+void PairMeshBuilder::edgeElements() {
+  std::vector<std::uint8_t> done(dv_.cellCount(), 0);
+  std::vector<Cell_handle> ring;
+  for (Index id = 0; id < dv_.cellCount(); ++id) {
+    if (!isInner(id)) continue;
+    const Cell_handle c = dv_.cell(id);
+    for (int e = 0; e < 6; ++e) {
+      if (done[id] & (1u << e)) continue;
+      const Vertex_handle va = c->vertex(kEdgeI[e]), vb = c->vertex(kEdgeJ[e]);
+      cellsAroundEdge(c, kEdgeI[e], kEdgeJ[e], ring);
+      for (const Cell_handle& r : ring)
+        done[DelaunayVoronoi::cellId(r)] |= static_cast<std::uint8_t>(1u << kEdgeOf[r->index(va)][r->index(vb)]);
+      edge(va, vb, ring);
+    }
+  }
+}
+
+// Turns `ring` (cells around ab) so that it goes positively about a -> b:
+// for an inner (hence finite) cell c of it, the next cell shares c's facet
+// opposite w, and (a, b, w, w') must be positively oriented.
+void PairMeshBuilder::orientRing(Vertex_handle va, Vertex_handle vb, std::vector<Cell_handle>& ring) const {
+  std::size_t k = 0;
+  while (!isInner(DelaunayVoronoi::cellId(ring[k]))) ++k;
+  const Cell_handle c = ring[k], next = ring[(k + 1) % ring.size()];
+  Vertex_handle w, w2;
+  for (int i = 0; i < 4; ++i) {
+    const Vertex_handle u = c->vertex(i);
+    if (u == va || u == vb) continue;
+    if (c->neighbor(i) == next) w = u;
+    else w2 = u;
+  }
+  if (CGAL::orientation(va->point(), vb->point(), w->point(), w2->point()) == CGAL::NEGATIVE)
+    std::reverse(ring.begin(), ring.end());
+}
+
+void PairMeshBuilder::edge(Vertex_handle va, Vertex_handle vb, std::vector<Cell_handle>& ring) {
+  std::size_t innerCount = 0;
+  for (const Cell_handle& r : ring) innerCount += isInner(DelaunayVoronoi::cellId(r)) ? 1 : 0;
+  if (innerCount == 0) return;
+  orientRing(va, vb, ring);
+  const Index a = va->info(), b = vb->info();
+  const std::size_t k = ring.size();
+  if (innerCount == k) {  // interior edge: two Face-Vertex pyramids
+    const bool linked = sheetFacetEdges_.find(a, b) != kNoIndex;
+    const std::array<Index, 2> facet{std::min(a, b), std::max(a, b)};
+    const Index n0 = node(ring[0]);
+    for (std::size_t i = 1; i + 1 < k; ++i) {
+      const Index ni = node(ring[i]), nj = node(ring[i + 1]);
+      add(PairElementType::FaceVertex, {a, n0, ni, nj}, facet, {a, kNoIndex, kNoIndex}, linked);
+      add(PairElementType::FaceVertex, {b, n0, nj, ni}, facet, {b, kNoIndex, kNoIndex}, linked);
+      m_->counts.faceVertex += 2;
+    }
+    return;
+  }
+  for (std::size_t i = 0; i < k; ++i) {  // boundary edge: Edge-Edge per inner Voronoi edge
+    const Index ci = DelaunayVoronoi::cellId(ring[i]), cj = DelaunayVoronoi::cellId(ring[(i + 1) % k]);
+    if (!isInner(ci) || !isInner(cj)) continue;
+    const bool linked = sheetVoronoiEdges_.find(ci, cj) != kNoIndex;
+    add(PairElementType::EdgeEdge, {a, b, nodeOfCell_[ci], nodeOfCell_[cj]}, {ci, cj}, {a, b, kNoIndex}, linked);
+    ++m_->counts.edgeEdge;
+  }
+}
+
+// The Vertex-Face element of inner cell `id` on its facet opposite local
+// vertex i (a boundary facet: the neighbour there is outer).
+void PairMeshBuilder::vertexFace(Index id, int i) {
+  const Cell_handle c = dv_.cell(id);
+  Vertex_handle x = c->vertex((i + 1) & 3), y = c->vertex((i + 2) & 3), z = c->vertex((i + 3) & 3);
+  // Outward: the cell's own vertex i on the negative side.
+  if (CGAL::orientation(x->point(), y->point(), z->point(), c->vertex(i)->point()) == CGAL::POSITIVE) std::swap(y, z);
+  const std::array<Index, 3> tri{x->info(), y->info(), z->info()};
+  m_->boundaryTriangles.push_back(tri);
+  add(PairElementType::VertexFace, {nodeOfCell_[id], tri[0], tri[1], tri[2]}, {id, kNoIndex}, tri,
+      sheetCells_[id] != 0);
+  ++m_->counts.vertexFace;
+}
+
+// Vertex-Face: every facet of an inner cell whose neighbour is outer.
+void PairMeshBuilder::vertexFaceElements() {
+  for (Index id = 0; id < dv_.cellCount(); ++id) {
+    if (!isInner(id)) continue;
+    for (int i = 0; i < 4; ++i)
+      if (!isInner(DelaunayVoronoi::cellId(dv_.cell(id)->neighbor(i)))) vertexFace(id, i);
+  }
+  m_->counts.boundaryTriangles = m_->boundaryTriangles.size();
+}
+
+// Nearly cospherical samples (grids on planar faces, parameter grids on
+// tori) give Voronoi vertices that coincide in exact arithmetic but differ
+// by rounding; the elements between them are slivers of either sign, and
+// their iso-surface cuts cross. Such nodes get one position (the first
+// seen), within 1e-8 of the samples' extent, which makes those elements
+// exactly flat instead.
+void PairMeshBuilder::weldNearlyCoincidentVoronoiNodes() {
+  PairMesh& m = *m_;
+  if (m.nodes.size() <= m.sampleNodes) return;
+  Vec3 lo = m.nodes[0], hi = m.nodes[0];
+  for (std::size_t i = 0; i < m.sampleNodes; ++i)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], m.nodes[i][k]), hi[k] = std::max(hi[k], m.nodes[i][k]);
+  const double extent = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                                  (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  const double tolerance = 1e-8 * extent;
+  if (!(tolerance > 0)) return;
+  auto cellOf = [&](const Vec3& p, int k) { return static_cast<std::int64_t>(std::floor(p[k] / tolerance)); };
+  auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) {
+    return (static_cast<std::uint64_t>(x) * 73856093u) ^ (static_cast<std::uint64_t>(y) * 19349663u) ^
+           (static_cast<std::uint64_t>(z) * 83492791u);
+  };
+  std::unordered_multimap<std::uint64_t, Index> grid;
+  grid.reserve(m.nodes.size() - m.sampleNodes);
+  for (Index n = static_cast<Index>(m.sampleNodes); n < m.nodes.size(); ++n) {
+    Vec3& p = m.nodes[n];
+    const std::int64_t cx = cellOf(p, 0), cy = cellOf(p, 1), cz = cellOf(p, 2);
+    bool welded = false;
+    for (int dx = -1; dx <= 1 && !welded; ++dx)
+      for (int dy = -1; dy <= 1 && !welded; ++dy)
+        for (int dz = -1; dz <= 1 && !welded; ++dz) {
+          const auto range = grid.equal_range(key(cx + dx, cy + dy, cz + dz));
+          for (auto it = range.first; it != range.second; ++it) {
+            const Vec3& q = m.nodes[it->second];
+            if (std::abs(q[0] - p[0]) <= tolerance && std::abs(q[1] - p[1]) <= tolerance &&
+                std::abs(q[2] - p[2]) <= tolerance) {
+              if (q != p) ++m.counts.weldedNodes;
+              p = q;
+              welded = true;
+              break;
+            }
+          }
+        }
+    if (!welded) grid.emplace(key(cx, cy, cz), n);
+  }
+}
+
+}  // namespace cadmedial

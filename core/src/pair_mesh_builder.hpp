@@ -1,0 +1,70 @@
+// Private to the pair-mesh: the elements of given inner labels on the
+// Delaunay triangulation (before any repair), and the local update of a
+// built mesh when some of its inner cells go outer (the last resort of the
+// repair, pair_mesh_boundary_cells.hpp).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "cadmedial/delaunay.hpp"
+#include "cadmedial/edge_table.hpp"
+#include "cadmedial/pair_mesh.hpp"
+#include "cadmedial/polygon_complex.hpp"
+#include "cadmedial/sample_set.hpp"
+
+namespace cadmedial {
+
+class PairMeshBuilder {
+ public:
+  // innerAxis (optional): the CAD_MEDIAL inner complex on the same
+  // triangulation, for the elements' onSheets flags.
+  PairMeshBuilder(const DelaunayVoronoi& dv, const SampleSet& samples, const MedialComplex* innerAxis);
+
+  // The pair-mesh of these labels (one per cell id; infinite cells count as
+  // outer), unrepaired; Voronoi nodes within 1e-8 of the extent are welded.
+  PairMesh build(const std::vector<std::uint8_t>& inner);
+
+  // `mesh` was built from labels under which `cells` were inner; in `after`
+  // they are outer. Only the elements that depend on those cells' labels
+  // change: those of the Delaunay edges of the cells (Face-Vertex and
+  // Edge-Edge) and their Vertex-Face elements; the new boundary facets get
+  // Vertex-Face elements, and the cells' Voronoi nodes are dropped. A split
+  // of one of those edges (by a repair) is undone. Every other element keeps
+  // what a repair did to it (node positions, re-triangulated polygons, split
+  // edges), so only the changed part is left to repair. Returns false, with
+  // `mesh` untouched, when an undone split shares a boundary polygon with
+  // another split, or an edge was split twice (their elements could no
+  // longer be told apart): the caller rebuilds instead.
+  bool relabelOuter(PairMesh& mesh, const std::vector<std::uint8_t>& after, const std::vector<Index>& cells);
+
+ private:
+  using Cell_handle = DelaunayVoronoi::Cell_handle;
+  using Vertex_handle = DelaunayVoronoi::Vertex_handle;
+
+  bool isInnerIn(const std::vector<std::uint8_t>& labels, Index c) const { return !dv_.isInfinite(c) && labels[c] != 0; }
+  bool isInner(Index c) const { return isInnerIn(*inner_, c); }
+  Index node(Cell_handle c) const { return nodeOfCell_[DelaunayVoronoi::cellId(c)]; }
+  void add(PairElementType t, std::array<Index, 4> tet, std::array<Index, 2> medial, std::array<Index, 3> boundary,
+           bool onSheets);
+  void edgeElements();
+  void cellsAroundEdge(Cell_handle c, int i, int j, std::vector<Cell_handle>& ring) const;
+  void orientRing(Vertex_handle va, Vertex_handle vb, std::vector<Cell_handle>& ring) const;
+  void edge(Vertex_handle va, Vertex_handle vb, std::vector<Cell_handle>& ring);
+  void vertexFace(Index cell, int facet);
+  void vertexFaceElements();
+  void weldNearlyCoincidentVoronoiNodes();
+
+  const DelaunayVoronoi& dv_;
+  const DelaunayVoronoi::Triangulation& dt_;
+  const SampleSet& samples_;
+  PairTable sheetFacetEdges_;    // Delaunay edges {p, q} of inner CAD_MEDIAL facets
+  PairTable sheetVoronoiEdges_;  // cell pairs that are edges of its polygons
+  std::vector<std::uint8_t> sheetCells_;
+  // Per call:
+  const std::vector<std::uint8_t>* inner_ = nullptr;
+  std::vector<Index> nodeOfCell_;
+  PairMesh* m_ = nullptr;
+};
+
+}  // namespace cadmedial
