@@ -63,6 +63,7 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
     // 1e-3 of the enclosed volume.
     const double budget = inverted > 0 ? 1e-3 * std::abs(checkPairMesh(mesh).enclosedVolume) : 0;
     double removed = 0;
+    std::size_t needingRepair = inverted > 0 ? countElementsNeedingRepair(mesh.nodes, mesh.tets) : 0;
     for (int pass = 0; pass < 3 && inverted > 0; ++pass) {
       const std::vector<Index> cells = boundaryCellsOfInvertedElements(dv, inner, mesh);
       if (cells.empty()) break;
@@ -81,9 +82,8 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
       }
       trial.counts.movedNodes = trial.counts.retriangulatedPolygons = 0;
       const std::size_t trialInverted = repairFlippedElements(trial, dv, 12, /*weldCloseNodes=*/false);
-      if (trialInverted >= inverted ||
-          countElementsNeedingRepair(trial.nodes, trial.tets) > countElementsNeedingRepair(mesh.nodes, mesh.tets))
-        break;
+      const std::size_t trialNeedingRepair = countElementsNeedingRepair(trial.nodes, trial.tets);
+      if (trialInverted >= inverted || trialNeedingRepair > needingRepair) break;
       // Counts of the kept mesh, except those of the whole history: inverted
       // before any repair, relabelled cells, and node moves and polygon
       // re-triangulations summed over the passes kept (split edges: those
@@ -100,11 +100,11 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
       mesh = std::move(trial);
       inner = std::move(trialInner);
       inverted = trialInverted;
+      needingRepair = trialNeedingRepair;
       removed += volume;
     }
   } else {
-    std::size_t negative = 0;
-    for (std::size_t i = 0; i < mesh.size(); ++i) negative += isInverted(mesh, i) ? 1 : 0;
+    const std::size_t negative = countElements(mesh.size(), [&](std::size_t i) { return isInverted(mesh, i); });
     mesh.counts.invertedBeforeRepair = mesh.counts.invertedAfterRepair = negative;
   }
   mesh.repairSeconds = watch.seconds();

@@ -2,6 +2,11 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <functional>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
 namespace cadmedial {
 
 bool elementNeedsRepair(const std::vector<Vec3>& nodes, const std::array<Index, 4>& t) {
@@ -12,9 +17,17 @@ bool elementNeedsRepair(const std::vector<Vec3>& nodes, const std::array<Index, 
 }
 
 std::size_t countElementsNeedingRepair(const std::vector<Vec3>& nodes, const std::vector<std::array<Index, 4>>& tets) {
-  std::size_t bad = 0;
-  for (const auto& t : tets) bad += elementNeedsRepair(nodes, t) ? 1 : 0;
-  return bad;
+  return countElements(tets.size(), [&](std::size_t i) { return elementNeedsRepair(nodes, tets[i]); });
+}
+
+std::size_t countElements(std::size_t count, const std::function<bool(std::size_t)>& test) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, count), std::size_t{0},
+      [&](const tbb::blocked_range<std::size_t>& r, std::size_t n) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) n += test(i) ? 1 : 0;
+        return n;
+      },
+      std::plus<std::size_t>());
 }
 
 bool hasCoincidentCorners(const std::vector<Vec3>& nodes, const std::array<Index, 4>& t) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "cadmedial/sample_set.hpp"
@@ -16,6 +17,10 @@ bool elementNeedsRepair(const std::vector<Vec3>& nodes, const std::array<Index, 
 
 // Elements needing repair among `tets`.
 std::size_t countElementsNeedingRepair(const std::vector<Vec3>& nodes, const std::vector<std::array<Index, 4>>& tets);
+
+// How many of 0 .. count-1 pass `test` (in parallel: these scans run over
+// every element several times per repair).
+std::size_t countElements(std::size_t count, const std::function<bool(std::size_t)>& test);
 
 // Two corners at the same position (welded Voronoi nodes): exactly flat.
 // Tested before an orientation predicate, which would go to exact

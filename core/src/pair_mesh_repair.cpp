@@ -59,9 +59,7 @@ double negligibleVolume(const PairMesh& m, std::size_t i) {
 namespace {
 
 std::size_t countNegative(const PairMesh& m) {
-  std::size_t bad = 0;
-  for (std::size_t i = 0; i < m.tets.size(); ++i) bad += isInverted(m, i) ? 1 : 0;
-  return bad;
+  return countElements(m.tets.size(), [&](std::size_t i) { return isInverted(m, i); });
 }
 
 // Rounds of Voronoi node moves (first case of §4.1); marks moved nodes.
