@@ -54,54 +54,60 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
   watch.restart();
   if (repair) {
     std::size_t inverted = repairFlippedElements(mesh, dv);
-    // Last resort, up to three times: the boundary cells whose Voronoi nodes
-    // the repair could not place go outer, the elements around them are
-    // rebuilt (its time counts as repair) and the mesh is repaired again
-    // (without the h/200 weld: the nodes are where the first repair left
-    // them). Kept only when fewer elements stay inverted and no more need
-    // repair (flat ones included), and when the cells taken out hold at most
-    // 1e-3 of the enclosed volume.
+    // Last resort, up to three passes: the boundary cells whose Voronoi
+    // nodes the repair could not place go outer or, failing that, the outer
+    // cells across the inverted elements' boundary facets go inner. Only the
+    // elements around the cells are rebuilt (the whole mesh where a split
+    // edge cannot be undone; either way its time counts as repair), and the
+    // mesh is repaired again (without the h/200 weld: the nodes are where the
+    // first repair left them). A trial is kept only when fewer elements stay
+    // inverted and no more need repair (flat ones included), and while the
+    // cells relabelled hold at most 1e-3 of the enclosed volume in all.
     const double budget = inverted > 0 ? 1e-3 * std::abs(checkPairMesh(mesh).enclosedVolume) : 0;
-    double removed = 0;
+    double changed = 0;
     std::size_t needingRepair = inverted > 0 ? countElementsNeedingRepair(mesh.nodes, mesh.tets) : 0;
     for (int pass = 0; pass < 3 && inverted > 0; ++pass) {
-      const std::vector<Index> cells = boundaryCellsOfInvertedElements(dv, inner, mesh);
-      if (cells.empty()) break;
-      double volume = 0;
-      for (Index c : cells) volume += std::abs(dv.triangulation().tetrahedron(dv.cell(c)).volume());
-      if (removed + volume > budget) break;
-      std::vector<std::uint8_t> trialInner = inner;
-      for (Index c : cells) trialInner[c] = 0;
-      // Only the elements around the cells change; where an edge split by
-      // the repair is among them, the whole mesh is rebuilt instead, with
-      // the nodes where the repair left them.
-          PairMesh trial = mesh;
-      if (!builder.relabelOuter(trial, trialInner, cells)) {
-        trial = builder.build(trialInner);
-        keepRepairedPositions(mesh, trial);
+      bool kept = false;
+      for (const bool goingInner : {false, true}) {
+        const std::vector<Index> cells = goingInner ? outerCellsAcrossInvertedElements(dv, inner, mesh)
+                                                    : boundaryCellsOfInvertedElements(dv, inner, mesh);
+        if (cells.empty()) continue;
+        double volume = 0;
+        for (Index c : cells) volume += std::abs(dv.triangulation().tetrahedron(dv.cell(c)).volume());
+        if (changed + volume > budget) continue;
+        std::vector<std::uint8_t> trialInner = inner;
+        for (Index c : cells) trialInner[c] = goingInner ? 1 : 0;
+        PairMesh trial = mesh;
+        if (!builder.relabel(trial, trialInner, cells)) {
+          trial = builder.build(trialInner);
+          keepRepairedPositions(mesh, trial);
+        }
+        trial.counts.movedNodes = trial.counts.retriangulatedPolygons = 0;
+        const std::size_t trialInverted = repairFlippedElements(trial, dv, 12, /*weldCloseNodes=*/false);
+        const std::size_t trialNeedingRepair = countElementsNeedingRepair(trial.nodes, trial.tets);
+        if (trialInverted >= inverted || trialNeedingRepair > needingRepair) continue;
+        // Counts of the kept mesh, except those of the whole history:
+        // inverted before any repair, relabelled cells, and node moves and
+        // polygon re-triangulations summed over the passes kept (split
+        // edges: those the kept mesh has).
+        PairMeshCounts& c = trial.counts;
+        c.invertedBeforeRepair = mesh.counts.invertedBeforeRepair;
+        c.relabelledFlatCells = relabelled;
+        c.relabelledBoundaryCells = mesh.counts.relabelledBoundaryCells + cells.size();
+        c.splitEdges = static_cast<std::size_t>(std::count(
+            trial.boundaryNode.begin() + static_cast<std::ptrdiff_t>(trial.sampleNodes), trial.boundaryNode.end(), 1));
+        c.movedNodes += mesh.counts.movedNodes;
+        c.retriangulatedPolygons += mesh.counts.retriangulatedPolygons;
+        trial.seconds = mesh.seconds;
+        mesh = std::move(trial);
+        inner = std::move(trialInner);
+        inverted = trialInverted;
+        needingRepair = trialNeedingRepair;
+        changed += volume;
+        kept = true;
+        break;
       }
-      trial.counts.movedNodes = trial.counts.retriangulatedPolygons = 0;
-      const std::size_t trialInverted = repairFlippedElements(trial, dv, 12, /*weldCloseNodes=*/false);
-      const std::size_t trialNeedingRepair = countElementsNeedingRepair(trial.nodes, trial.tets);
-      if (trialInverted >= inverted || trialNeedingRepair > needingRepair) break;
-      // Counts of the kept mesh, except those of the whole history: inverted
-      // before any repair, relabelled cells, and node moves and polygon
-      // re-triangulations summed over the passes kept (split edges: those
-      // the kept mesh has).
-      PairMeshCounts& c = trial.counts;
-      c.invertedBeforeRepair = mesh.counts.invertedBeforeRepair;
-      c.relabelledFlatCells = relabelled;
-      c.relabelledBoundaryCells = mesh.counts.relabelledBoundaryCells + cells.size();
-      c.splitEdges = static_cast<std::size_t>(
-          std::count(trial.boundaryNode.begin() + static_cast<std::ptrdiff_t>(trial.sampleNodes), trial.boundaryNode.end(), 1));
-      c.movedNodes += mesh.counts.movedNodes;
-      c.retriangulatedPolygons += mesh.counts.retriangulatedPolygons;
-      trial.seconds = mesh.seconds;
-      mesh = std::move(trial);
-      inner = std::move(trialInner);
-      inverted = trialInverted;
-      needingRepair = trialNeedingRepair;
-      removed += volume;
+      if (!kept) break;
     }
   } else {
     const std::size_t negative = countElements(mesh.size(), [&](std::size_t i) { return isInverted(mesh, i); });

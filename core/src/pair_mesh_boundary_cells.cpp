@@ -144,4 +144,65 @@ std::vector<Index> boundaryCellsOfInvertedElements(const DelaunayVoronoi& dv, co
   return cells;
 }
 
+std::vector<Index> outerCellsAcrossInvertedElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
+                                                    const PairMesh& mesh) {
+  const auto& dt = dv.triangulation();
+  std::vector<Index> cells;
+  // The outer neighbours of inner cell `id` across its facets that hold all
+  // of `samples` (its boundary facets there).
+  auto across = [&](Index id, const std::vector<Index>& samples) {
+    const auto c = dv.cell(id);
+    for (int k = 0; k < 4; ++k) {
+      const Index n = DelaunayVoronoi::cellId(c->neighbor(k));
+      if (isInner(dv, inner, n) || dv.isInfinite(n)) continue;
+      bool holds = true;
+      for (Index s : samples) holds = holds && s != c->vertex(k)->info() && dv.cellHasSample(id, s);
+      if (holds) cells.push_back(n);
+    }
+  };
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    if (!isInverted(mesh, i)) continue;
+    const auto& t = mesh.tets[i];
+    if (mesh.type[i] == PairElementType::VertexFace) {
+      std::vector<Index> samples;
+      for (int k = 1; k < 4; ++k)
+        if (mesh.isSampleNode(t[k])) samples.push_back(t[k]);
+      across(mesh.medialSimplex[i][0], samples);
+    } else if (mesh.type[i] == PairElementType::FaceVertex) {
+      for (int k = 1; k < 4; ++k)
+        if (mesh.nodeCell[t[k]] != kNoIndex) across(mesh.nodeCell[t[k]], {});
+    } else if (mesh.type[i] == PairElementType::EdgeEdge && mesh.isSampleNode(t[0]) && mesh.isSampleNode(t[1])) {
+      DelaunayVoronoi::Cell_handle start;
+      int a = 0, b = 0;
+      if (!dt.is_edge(dv.vertex(t[0]), dv.vertex(t[1]), start, a, b)) continue;
+      auto circ = dt.incident_cells(start, a, b);
+      const auto first = circ;
+      do {
+        const Index id = DelaunayVoronoi::cellId(circ);
+        if (isInner(dv, inner, id)) across(id, {t[0], t[1]});
+      } while (++circ != first);
+    }
+  }
+  std::sort(cells.begin(), cells.end());
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  // Those that would leave an edge with two runs of inner cells stay outer,
+  // until none is left.
+  std::vector<std::uint8_t> trial = inner;
+  for (Index id : cells) trial[id] = 1;
+  for (bool dropped = true; dropped;) {
+    dropped = false;
+    std::vector<Index> kept;
+    for (Index id : cells) {
+      if (edgesStayManifold(dv, trial, id)) {
+        kept.push_back(id);
+      } else {
+        trial[id] = 0;
+        dropped = true;
+      }
+    }
+    cells = std::move(kept);
+  }
+  return cells;
+}
+
 }  // namespace cadmedial

@@ -23,4 +23,17 @@ namespace cadmedial {
 std::vector<Index> boundaryCellsOfInvertedElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
                                                    const PairMesh& mesh);
 
+// The other way round: finite outer cells next to inverted elements, for the
+// caller to relabel inner (the boundary then runs over their other
+// facets): those across the boundary facets of inverted Vertex-Face
+// elements, across the boundary facets on the edge of inverted Edge-Edge
+// elements, and next to the boundary cells holding the Voronoi nodes of
+// inverted Face-Vertex elements. Where the repair and the cells going outer
+// leave elements inverted on coarsely sampled parts (NIST CTC-01, h = 23 mm:
+// 5 -> 0 with 8 cells in two passes), this is what removes them. Cells that
+// would leave an edge with two runs of inner cells are left out. Vertices
+// are not checked. Sorted, each cell once.
+std::vector<Index> outerCellsAcrossInvertedElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
+                                                    const PairMesh& mesh);
+
 }  // namespace cadmedial

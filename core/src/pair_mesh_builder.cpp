@@ -85,14 +85,19 @@ PairMesh PairMeshBuilder::build(const std::vector<std::uint8_t>& inner) {
   return m;
 }
 
-bool PairMeshBuilder::relabelOuter(PairMesh& mesh, const std::vector<std::uint8_t>& after,
-                                   const std::vector<Index>& cells) {
+bool PairMeshBuilder::relabel(PairMesh& mesh, const std::vector<std::uint8_t>& after, const std::vector<Index>& cells) {
   if (after.size() != dv_.cellCount()) throw std::invalid_argument("pair-mesh: one inner label per cell needed");
   if (cells.empty() || dv_.dimension() != 3) return true;
-  std::vector<std::uint8_t> gone(dv_.cellCount(), 0);
+  // Inner before: the cells with a Voronoi node in the mesh.
+  std::vector<Index> nodeBefore(dv_.cellCount(), kNoIndex);
+  for (Index n = 0; n < mesh.nodes.size(); ++n)
+    if (mesh.nodeCell[n] != kNoIndex) nodeBefore[mesh.nodeCell[n]] = n;
+  auto innerBefore = [&](Index c) { return nodeBefore[c] != kNoIndex; };
+  std::vector<std::uint8_t> gone(dv_.cellCount(), 0), added(dv_.cellCount(), 0);
   for (Index c : cells) {
-    if (dv_.isInfinite(c) || after[c] != 0) throw std::invalid_argument("pair-mesh: relabelled cells must be finite and outer");
-    gone[c] = 1;
+    if (dv_.isInfinite(c) || innerBefore(c) == isInnerIn(after, c))
+      throw std::invalid_argument("pair-mesh: relabelled cells must be finite and change side");
+    (innerBefore(c) ? gone : added)[c] = 1;
   }
   // The Delaunay edges of the cells (sample pairs), each once, with a cell
   // and local edge to circulate from.
@@ -147,7 +152,6 @@ bool PairMeshBuilder::relabelOuter(PairMesh& mesh, const std::vector<std::uint8_
     splitNodeOfEdge.insert(samples[0], samples[1], split);
     if (edges.find(samples[0], samples[1]) != kNoIndex) toUndo.push_back(split);
   }
-  auto innerBefore = [&](Index c) { return isInnerIn(after, c) || gone[c]; };
   std::vector<std::uint8_t> undoneNode(mesh.nodes.size(), 0);
   std::vector<std::pair<Index, int>> restoredFacets;  // (cell, local vertex opposite)
   std::vector<std::array<Index, 3>> restoredCorners;  // the same facets' samples, sorted
@@ -166,10 +170,10 @@ bool PairMeshBuilder::relabelOuter(PairMesh& mesh, const std::vector<std::uint8_
     cellsAroundEdge(start, i, j, ring);
     for (const Cell_handle& c : ring) {
       const Index id = DelaunayVoronoi::cellId(c);
-      if (!isInnerIn(after, id)) continue;
+      if (!isInnerIn(after, id) || added[id]) continue;  // (an added cell's facets are all new)
       for (int w = 0; w < 4; ++w) {  // the facets on ab: opposite the two other vertices
-        const Index sample = c->vertex(w)->info();
-        if (sample == info.edge[0] || sample == info.edge[1] || innerBefore(DelaunayVoronoi::cellId(c->neighbor(w))))
+        const Index sample = c->vertex(w)->info(), across = DelaunayVoronoi::cellId(c->neighbor(w));
+        if (sample == info.edge[0] || sample == info.edge[1] || innerBefore(across) || isInnerIn(after, across))
           continue;
         if (std::find(restoredFacets.begin(), restoredFacets.end(), std::make_pair(id, w)) != restoredFacets.end())
           continue;
@@ -186,9 +190,23 @@ bool PairMeshBuilder::relabelOuter(PairMesh& mesh, const std::vector<std::uint8_
       }
     }
   }
-  std::unordered_map<Index, std::vector<std::array<Index, 3>>> restoredOf;
+  // Per cell that stays inner: the boundary facets whose Vertex-Face
+  // elements go (restored ones, and those an added cell now covers).
+  std::unordered_map<Index, std::vector<std::array<Index, 3>>> replacedFacets;
   for (std::size_t k = 0; k < restoredFacets.size(); ++k)
-    restoredOf[restoredFacets[k].first].push_back(restoredCorners[k]);
+    replacedFacets[restoredFacets[k].first].push_back(restoredCorners[k]);
+  for (Index c : cells) {
+    if (!added[c]) continue;
+    for (int i = 0; i < 4; ++i) {
+      const Index n = DelaunayVoronoi::cellId(dv_.cell(c)->neighbor(i));
+      if (!innerBefore(n) || gone[n]) continue;
+      std::array<Index, 3> corners{};
+      for (int u = 0, k = 0; u < 4; ++u)
+        if (u != i) corners[k++] = dv_.cell(c)->vertex(u)->info();
+      std::sort(corners.begin(), corners.end());
+      replacedFacets[n].push_back(corners);
+    }
+  }
 
   // Out: the elements of those edges and split nodes, the cells'
   // Vertex-Face elements and those of the restored facets.
@@ -207,8 +225,8 @@ bool PairMeshBuilder::relabelOuter(PairMesh& mesh, const std::vector<std::uint8_
       case PairElementType::VertexFace: {
         const Index c = mesh.medialSimplex[i][0];
         drop = drop || gone[c] != 0;
-        const auto it = restoredOf.find(c);
-        if (!drop && it != restoredOf.end()) {
+        const auto it = replacedFacets.find(c);
+        if (!drop && it != replacedFacets.end()) {
           std::array<Index, 3> corners{t[1], t[2], t[3]};
           std::sort(corners.begin(), corners.end());
           drop = std::find(it->second.begin(), it->second.end(), corners) != it->second.end();
@@ -231,12 +249,18 @@ bool PairMeshBuilder::relabelOuter(PairMesh& mesh, const std::vector<std::uint8_
   mesh.onSheets.resize(out);
 
   // In: the same edges' elements and the new boundary facets' Vertex-Face
-  // elements under the new labels, on the nodes where they are.
+  // elements under the new labels, on the nodes where they are; an added
+  // cell's node starts at its circumcenter.
   inner_ = &after;
   m_ = &mesh;
-  nodeOfCell_.assign(dv_.cellCount(), kNoIndex);
-  for (Index n = 0; n < mesh.nodes.size(); ++n)
-    if (mesh.nodeCell[n] != kNoIndex) nodeOfCell_[mesh.nodeCell[n]] = n;
+  nodeOfCell_ = std::move(nodeBefore);
+  for (Index c : cells)
+    if (added[c]) {
+      nodeOfCell_[c] = static_cast<Index>(mesh.nodes.size());
+      mesh.nodes.push_back(dv_.circumcenter(c));
+      mesh.nodeCell.push_back(c);
+      mesh.boundaryNode.push_back(0);
+    }
   for (const auto& [c, e] : edgeStarts) {
     const Cell_handle cell = dv_.cell(c);
     cellsAroundEdge(cell, kEdgeI[e], kEdgeJ[e], ring);
@@ -250,12 +274,14 @@ bool PairMeshBuilder::relabelOuter(PairMesh& mesh, const std::vector<std::uint8_
     for (int i = 0; i < 4; ++i) {
       const Cell_handle n = dv_.cell(c)->neighbor(i);
       const Index id = DelaunayVoronoi::cellId(n);
-      if (isInner(id)) vertexFace(id, n->index(dv_.cell(c)));
+      if (gone[c] && isInner(id) && !added[id]) vertexFace(id, n->index(dv_.cell(c)));  // newly exposed
+      if (added[c] && !isInner(id)) vertexFace(c, i);                                  // the added cell's own
     }
   for (const auto& [c, w] : restoredFacets) vertexFace(c, w);
   m_ = nullptr;
   inner_ = nullptr;
 
+  undoneNode.resize(mesh.nodes.size(), 0);
   std::vector<std::uint8_t> dropNode(mesh.nodes.size(), 0);
   for (Index n = 0; n < mesh.nodes.size(); ++n)
     dropNode[n] = undoneNode[n] || (mesh.nodeCell[n] != kNoIndex && gone[mesh.nodeCell[n]]);
@@ -274,7 +300,7 @@ bool PairMeshBuilder::relabelOuter(PairMesh& mesh, const std::vector<std::uint8_
     }
   }
   k.boundaryTriangles = mesh.boundaryTriangles.size();
-  k.innerCells -= cells.size();
+  for (Index c : cells) gone[c] ? --k.innerCells : ++k.innerCells;
   return true;
 }
 
@@ -343,6 +369,14 @@ void PairMeshBuilder::edge(Vertex_handle va, Vertex_handle vb, std::vector<Cell_
   const Index a = va->info(), b = vb->info();
   const std::size_t k = ring.size();
   if (innerCount == k) {  // interior edge: two Face-Vertex pyramids
+    // The fan starts at the cell of lowest id, whichever cell the edge was
+    // reached from: a rebuild and a local relabel give the same elements.
+    std::rotate(ring.begin(),
+                std::min_element(ring.begin(), ring.end(),
+                                 [](const Cell_handle& x, const Cell_handle& y) {
+                                   return DelaunayVoronoi::cellId(x) < DelaunayVoronoi::cellId(y);
+                                 }),
+                ring.end());
     const bool linked = sheetFacetEdges_.find(a, b) != kNoIndex;
     const std::array<Index, 2> facet{std::min(a, b), std::max(a, b)};
     const Index n0 = node(ring[0]);

@@ -25,18 +25,20 @@ class PairMeshBuilder {
   // outer), unrepaired; Voronoi nodes within 1e-8 of the extent are welded.
   PairMesh build(const std::vector<std::uint8_t>& inner);
 
-  // `mesh` was built from labels under which `cells` were inner; in `after`
-  // they are outer. Only the elements that depend on those cells' labels
-  // change: those of the Delaunay edges of the cells (Face-Vertex and
-  // Edge-Edge) and their Vertex-Face elements; the new boundary facets get
-  // Vertex-Face elements, and the cells' Voronoi nodes are dropped. A split
-  // of one of those edges (by a repair) is undone. Every other element keeps
-  // what a repair did to it (node positions, re-triangulated polygons, split
-  // edges), so only the changed part is left to repair. Returns false, with
-  // `mesh` untouched, when an undone split shares a boundary polygon with
-  // another split, or an edge was split twice (their elements could no
+  // `mesh` was built (and maybe repaired) from labels under which `cells`
+  // had the other side than in `after` (inner cells going outer, or outer
+  // cells going inner). Only the elements that depend on those cells'
+  // labels change: those of the Delaunay edges of the cells (Face-Vertex and
+  // Edge-Edge) and the Vertex-Face elements of their facets; the cells going
+  // outer lose their Voronoi nodes, those going inner get one at their
+  // circumcenter. A split of one of those edges (by a repair) is undone, and
+  // so is a split on another edge of a boundary facet that has to be
+  // restored because of it. Every other element keeps what a repair did to
+  // it (node positions, re-triangulated polygons, split edges), so only the
+  // changed part is left to repair. Returns false, with `mesh` untouched,
+  // when a split to undo is of an edge split twice (its elements could no
   // longer be told apart): the caller rebuilds instead.
-  bool relabelOuter(PairMesh& mesh, const std::vector<std::uint8_t>& after, const std::vector<Index>& cells);
+  bool relabel(PairMesh& mesh, const std::vector<std::uint8_t>& after, const std::vector<Index>& cells);
 
  private:
   using Cell_handle = DelaunayVoronoi::Cell_handle;
