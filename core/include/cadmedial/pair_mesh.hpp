@@ -56,12 +56,14 @@ struct PairMeshCounts {
   // Flat Delaunay cells (coplanar samples, no meaningful circumcenter) given
   // their neighbours' side where that removes a fold of the boundary.
   std::size_t relabelledFlatCells = 0;
-  // Last resort: inner cells on the boundary whose Voronoi node was a corner
-  // of an element the repair left inverted, relabelled outer (the boundary
-  // then runs over their other facets) when the rebuilt, repaired mesh has
-  // fewer inverted elements. movedNodes and retriangulatedPolygons are then
-  // summed over the repairs of the meshes kept; the other counts are those
-  // of the final mesh (invertedBeforeRepair: of the first).
+  // Last resort: cells that changed side around elements the repair left
+  // inverted, when the updated, repaired mesh has fewer inverted elements:
+  // inner cells on the boundary whose Voronoi node was a corner of such an
+  // element, relabelled outer, or outer cells next to such an element,
+  // relabelled inner (the boundary then runs over their other facets).
+  // movedNodes and retriangulatedPolygons are then summed over the repairs
+  // of the meshes kept; splitEdges and the other counts are those of the
+  // final mesh (invertedBeforeRepair: of the first).
   std::size_t relabelledBoundaryCells = 0;
   std::size_t invertedAfterRepair = 0;
 };
@@ -102,7 +104,7 @@ struct PairMesh {
 // (cellInner[id] != 0: inner; size dv.cellCount()). innerAxis (optional): the
 // CAD_MEDIAL inner complex built on the same triangulation, for onSheets.
 // Runs the repair unless repair is false; what it leaves inverted gets the
-// last resort, boundary cells relabelled outer (counts.relabelledBoundaryCells).
+// last resort, cells next to it relabelled (counts.relabelledBoundaryCells).
 PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, const std::vector<std::uint8_t>& cellInner,
                        const MedialComplex* innerAxis = nullptr, bool repair = true);
 
