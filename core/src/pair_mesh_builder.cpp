@@ -15,8 +15,10 @@ constexpr int kEdgeI[6] = {0, 0, 0, 1, 1, 2};
 constexpr int kEdgeJ[6] = {1, 2, 3, 2, 3, 3};
 constexpr int kEdgeOf[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
 
-// Only the relabelled cells' own Voronoi nodes go; the others keep their
-// order (sample nodes, then Voronoi nodes by cell id, then split nodes).
+// Drops nodes, keeping the others in their order. (The repair that follows
+// visits candidate nodes in index order, and its result depends on that
+// order: NIST CTC-01 ends with 0 inverted elements with added cells' nodes
+// appended, 1 with them sorted among the Voronoi nodes by cell id.)
 void dropNodes(PairMesh& m, const std::vector<std::uint8_t>& drop) {
   std::vector<Index> renumber(m.nodes.size(), kNoIndex);
   Index next = 0;
@@ -39,6 +41,13 @@ void dropNodes(PairMesh& m, const std::vector<std::uint8_t>& drop) {
 
 PairMeshBuilder::PairMeshBuilder(const DelaunayVoronoi& dv, const SampleSet& samples, const MedialComplex* axis)
     : dv_(dv), dt_(dv.triangulation()), samples_(samples) {
+  if (!samples.points.empty()) {
+    Vec3 lo = samples.points[0], hi = samples.points[0];
+    for (const Vec3& p : samples.points)
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+    weldTolerance_ = 1e-8 * std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                                      (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  }
   sheetCells_.assign(dv.cellCount(), 0);
   if (!axis) return;
   sheetFacetEdges_.reserve(axis->polygonCount());
@@ -95,10 +104,13 @@ bool PairMeshBuilder::relabel(PairMesh& mesh, const std::vector<std::uint8_t>& a
   auto innerBefore = [&](Index c) { return nodeBefore[c] != kNoIndex; };
   std::vector<std::uint8_t> gone(dv_.cellCount(), 0), added(dv_.cellCount(), 0);
   for (Index c : cells) {
-    if (dv_.isInfinite(c) || innerBefore(c) == isInnerIn(after, c))
-      throw std::invalid_argument("pair-mesh: relabelled cells must be finite and change side");
+    if (c >= dv_.cellCount() || dv_.isInfinite(c) || innerBefore(c) == isInnerIn(after, c) || gone[c] || added[c])
+      throw std::invalid_argument("pair-mesh: relabelled cells must be finite, listed once, and change side");
     (innerBefore(c) ? gone : added)[c] = 1;
   }
+  for (Index c = 0; c < dv_.cellCount(); ++c)
+    if (!gone[c] && !added[c] && innerBefore(c) != isInnerIn(after, c))
+      throw std::invalid_argument("pair-mesh: only the relabelled cells may change side");
   // The Delaunay edges of the cells (sample pairs), each once, with a cell
   // and local edge to circulate from.
   PairTable edges;
@@ -253,11 +265,11 @@ bool PairMeshBuilder::relabel(PairMesh& mesh, const std::vector<std::uint8_t>& a
   // cell's node starts at its circumcenter.
   inner_ = &after;
   m_ = &mesh;
-  nodeOfCell_ = std::move(nodeBefore);
+  nodeOfCell_ = nodeBefore;
   for (Index c : cells)
     if (added[c]) {
       nodeOfCell_[c] = static_cast<Index>(mesh.nodes.size());
-      mesh.nodes.push_back(dv_.circumcenter(c));
+      mesh.nodes.push_back(weldedPosition(mesh, c));
       mesh.nodeCell.push_back(c);
       mesh.boundaryNode.push_back(0);
     }
@@ -300,6 +312,8 @@ bool PairMeshBuilder::relabel(PairMesh& mesh, const std::vector<std::uint8_t>& a
     }
   }
   k.boundaryTriangles = mesh.boundaryTriangles.size();
+  k.splitEdges = static_cast<std::size_t>(std::count(
+      mesh.boundaryNode.begin() + static_cast<std::ptrdiff_t>(mesh.sampleNodes), mesh.boundaryNode.end(), 1));
   for (Index c : cells) gone[c] ? --k.innerCells : ++k.innerCells;
   return true;
 }
@@ -421,6 +435,31 @@ void PairMeshBuilder::vertexFaceElements() {
   m_->counts.boundaryTriangles = m_->boundaryTriangles.size();
 }
 
+// Where an added cell's circumcenter is within the weld tolerance of a
+// Voronoi node already in the mesh (reached through neighbours whose
+// circumcenters are that close too: one cluster of nearly cospherical
+// samples), the node takes that node's position, as a build would have
+// welded it; otherwise its circumcenter.
+Vec3 PairMeshBuilder::weldedPosition(const PairMesh& mesh, Index cell) const {
+  const Vec3& p = dv_.circumcenter(cell);
+  auto close = [&](const Vec3& q) {
+    return std::abs(q[0] - p[0]) <= weldTolerance_ && std::abs(q[1] - p[1]) <= weldTolerance_ &&
+           std::abs(q[2] - p[2]) <= weldTolerance_;
+  };
+  std::vector<Index> cluster{cell};
+  for (std::size_t k = 0; k < cluster.size() && cluster.size() < 64; ++k)
+    for (int i = 0; i < 4; ++i) {
+      const Index n = DelaunayVoronoi::cellId(dv_.cell(cluster[k])->neighbor(i));
+      if (dv_.isInfinite(n) || std::find(cluster.begin(), cluster.end(), n) != cluster.end() ||
+          !close(dv_.circumcenter(n)))
+        continue;
+      if (nodeOfCell_[n] != kNoIndex && nodeOfCell_[n] < mesh.nodes.size() && close(mesh.nodes[nodeOfCell_[n]]))
+        return mesh.nodes[nodeOfCell_[n]];
+      cluster.push_back(n);
+    }
+  return p;
+}
+
 // Nearly cospherical samples (grids on planar faces, parameter grids on
 // tori) give Voronoi vertices that coincide in exact arithmetic but differ
 // by rounding; the elements between them are slivers of either sign, and
@@ -430,12 +469,7 @@ void PairMeshBuilder::vertexFaceElements() {
 void PairMeshBuilder::weldNearlyCoincidentVoronoiNodes() {
   PairMesh& m = *m_;
   if (m.nodes.size() <= m.sampleNodes) return;
-  Vec3 lo = m.nodes[0], hi = m.nodes[0];
-  for (std::size_t i = 0; i < m.sampleNodes; ++i)
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], m.nodes[i][k]), hi[k] = std::max(hi[k], m.nodes[i][k]);
-  const double extent = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                                  (hi[2] - lo[2]) * (hi[2] - lo[2]));
-  const double tolerance = 1e-8 * extent;
+  const double tolerance = weldTolerance_;
   if (!(tolerance > 0)) return;
   auto cellOf = [&](const Vec3& p, int k) { return static_cast<std::int64_t>(std::floor(p[k] / tolerance)); };
   auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) {

@@ -1,7 +1,7 @@
 // Private to the pair-mesh: the elements of given inner labels on the
 // Delaunay triangulation (before any repair), and the local update of a
-// built mesh when some of its inner cells go outer (the last resort of the
-// repair, pair_mesh_boundary_cells.hpp).
+// built mesh when a few cells change side (the last resort of the repair,
+// pair_mesh_boundary_cells.hpp).
 #pragma once
 
 #include <cstdint>
@@ -35,9 +35,12 @@ class PairMeshBuilder {
   // so is a split on another edge of a boundary facet that has to be
   // restored because of it. Every other element keeps what a repair did to
   // it (node positions, re-triangulated polygons, split edges), so only the
-  // changed part is left to repair. Returns false, with `mesh` untouched,
-  // when a split to undo is of an edge split twice (its elements could no
-  // longer be told apart): the caller rebuilds instead.
+  // changed part is left to repair. Nodes keep their order; an added node
+  // is appended (after any split nodes) and welded like a build would (within 1e-8 of the extent of a node of its
+  // cluster of nearly coincident circumcenters). Returns false, with `mesh`
+  // untouched, when a split to undo is of an edge split twice (its elements
+  // could no longer be told apart): the caller rebuilds instead. Throws
+  // std::invalid_argument unless exactly the listed cells change side.
   bool relabel(PairMesh& mesh, const std::vector<std::uint8_t>& after, const std::vector<Index>& cells);
 
  private:
@@ -56,10 +59,12 @@ class PairMeshBuilder {
   void vertexFace(Index cell, int facet);
   void vertexFaceElements();
   void weldNearlyCoincidentVoronoiNodes();
+  Vec3 weldedPosition(const PairMesh& mesh, Index cell) const;
 
   const DelaunayVoronoi& dv_;
   const DelaunayVoronoi::Triangulation& dt_;
   const SampleSet& samples_;
+  double weldTolerance_ = 0;  // 1e-8 of the samples' bounding-box diagonal
   PairTable sheetFacetEdges_;    // Delaunay edges {p, q} of inner CAD_MEDIAL facets
   PairTable sheetVoronoiEdges_;  // cell pairs that are edges of its polygons
   std::vector<std::uint8_t> sheetCells_;

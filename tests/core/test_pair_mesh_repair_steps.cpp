@@ -14,11 +14,13 @@
 
 #include "cadmedial/pair_mesh.hpp"
 #include "mesh_sets.hpp"
+#include "synthetic_samples.hpp"
 #include "pair_mesh_boundary_cells.hpp"
 #include "pair_mesh_builder.hpp"
 #include "pair_mesh_facet_triangulation.hpp"
 
 using namespace cadmedial;
+using cadmedial::testing::gridBoxSamples;
 using cadmedial::testing::orientedSet;
 
 namespace {
@@ -254,6 +256,7 @@ namespace {
 struct CanonicalMesh {
   std::vector<std::tuple<int, std::array<std::int64_t, 4>, std::array<Index, 2>, std::uint8_t>> elements;
   std::map<std::int64_t, Vec3> positions;
+  std::set<std::vector<std::int64_t>> coincident;  // nodes sharing one position (welded), 2 or more
 };
 
 CanonicalMesh canonical(const PairMesh& m) {
@@ -275,76 +278,121 @@ CanonicalMesh canonical(const PairMesh& m) {
     c.elements.emplace_back(static_cast<int>(m.type[i]), t, medial, m.onSheets[i]);
   }
   std::sort(c.elements.begin(), c.elements.end());
-  for (Index n = 0; n < m.nodes.size(); ++n) c.positions[name(n)] = m.nodes[n];
+  std::map<Vec3, std::vector<std::int64_t>> at;
+  for (Index n = 0; n < m.nodes.size(); ++n) {
+    c.positions[name(n)] = m.nodes[n];
+    at[m.nodes[n]].push_back(name(n));
+  }
+  for (auto& [p, names] : at)
+    if (names.size() > 1) {
+      std::sort(names.begin(), names.end());
+      c.coincident.insert(names);
+    }
   return c;
 }
 
 }  // namespace
 
 // Relabelling cells in place gives the mesh a rebuild with the new labels
-// gives: the same elements on the same nodes, the same boundary (here before
-// any repair, when both must agree exactly). Sets of cells: those around
-// inverted elements that the last resort offers, sets that leave holes and
-// pinches inside the knife, and, from a knife with such holes, sets that
-// fill some holes (cells going inner) while opening others.
+// gives: the same elements on the same nodes, the same boundary (here before any repair, when both must agree). Positions agree
+// to the weld tolerance (1e-8 of the extent: a welded cluster may take
+// another member's position) and the same nodes share a position. Sets of
+// cells: those around inverted elements that the last resort offers, sets
+// that leave holes and pinches inside the knife and, from a knife with such
+// holes, sets that fill some holes (cells going inner) while opening
+// others; the same on a grid box, whose cospherical samples make welded
+// clusters.
 TEST(PairMeshRepairSteps, LocalRelabellingEqualsARebuild) {
-  const SampleSet samples = knife(0.3);
-  const DelaunayVoronoi dv(samples.points);
-  std::vector<std::uint8_t> full(dv.cellCount(), 0);
-  for (Index c = 0; c < dv.cellCount(); ++c) full[c] = dv.isInfinite(c) ? 0 : 1;
-  std::vector<std::uint8_t> holed = full;
-  for (Index c = 0; c < dv.cellCount(); c += 5) holed[c] = 0;
-  PairMeshBuilder builder(dv, samples, nullptr);
-  PairMesh repaired = builder.build(full);
-  repairFlippedElements(repaired, dv);
-  struct Case {
-    const std::vector<std::uint8_t>* before;
-    std::vector<Index> cells;
-  };
-  std::vector<Case> cases{{&full, boundaryCellsOfInvertedElements(dv, full, repaired)}};
-  for (Index stride : {3u, 7u, 50u}) {
-    std::vector<Index> every;
-    for (Index c = 0; c < dv.cellCount(); c += stride)
-      if (full[c]) every.push_back(c);
-    cases.push_back({&full, every});
-  }
-  for (Index stride : {10u, 15u, 35u}) {  // every second hole filled (stride 10), with others opened
-    std::vector<Index> flip;
-    for (Index c = 0; c < dv.cellCount(); c += stride)
-      if (!dv.isInfinite(c)) flip.push_back(c);
-    for (Index c = 3; c < dv.cellCount() && stride != 10; c += 11)
-      if (holed[c]) flip.push_back(c);
-    std::sort(flip.begin(), flip.end());
-    flip.erase(std::unique(flip.begin(), flip.end()), flip.end());
-    cases.push_back({&holed, flip});
-  }
-  std::size_t goingInner = 0;
-  for (const auto& [before, cells] : cases) {
-    ASSERT_FALSE(cells.empty());
-    std::vector<std::uint8_t> after = *before;
-    for (Index c : cells) {
-      after[c] = (*before)[c] ? 0 : 1;
-      goingInner += after[c];
+  std::size_t goingInner = 0, weldedClusters = 0;
+  for (const SampleSet& samples : {knife(0.3), gridBoxSamples(5, 0.2)}) {
+    const DelaunayVoronoi dv(samples.points);
+    std::vector<std::uint8_t> full(dv.cellCount(), 0);
+    for (Index c = 0; c < dv.cellCount(); ++c) full[c] = dv.isInfinite(c) ? 0 : 1;
+    std::vector<std::uint8_t> holed = full;
+    for (Index c = 0; c < dv.cellCount(); c += 5) holed[c] = 0;
+    PairMeshBuilder builder(dv, samples, nullptr);
+    PairMesh repaired = builder.build(full);
+    repairFlippedElements(repaired, dv);
+    struct Case {
+      const std::vector<std::uint8_t>* before;
+      std::vector<Index> cells;
+    };
+    std::vector<Case> cases;
+    if (const auto offered = boundaryCellsOfInvertedElements(dv, full, repaired); !offered.empty())
+      cases.push_back({&full, offered});
+    for (Index stride : {3u, 7u, 50u}) {
+      std::vector<Index> every;
+      for (Index c = 0; c < dv.cellCount(); c += stride)
+        if (full[c]) every.push_back(c);
+      cases.push_back({&full, every});
     }
-    PairMesh local = builder.build(*before);
-    ASSERT_TRUE(builder.relabel(local, after, cells));
-    const PairMesh rebuilt = builder.build(after);
-    const CanonicalMesh a = canonical(local), b = canonical(rebuilt);
-    EXPECT_EQ(a.elements, b.elements) << cells.size();
-    ASSERT_EQ(a.positions.size(), b.positions.size());
-    for (const auto& [n, p] : a.positions)
-      for (int k = 0; k < 3; ++k) EXPECT_NEAR(p[k], b.positions.at(n)[k], 1e-7) << n;
-    EXPECT_EQ(orientedSet(local.boundaryTriangles), orientedSet(rebuilt.boundaryTriangles));
-    EXPECT_EQ(local.counts.innerCells, rebuilt.counts.innerCells);
-    EXPECT_EQ(local.counts.faceVertex, rebuilt.counts.faceVertex);
-    EXPECT_EQ(local.counts.edgeEdge, rebuilt.counts.edgeEdge);
-    EXPECT_EQ(local.counts.vertexFace, rebuilt.counts.vertexFace);
-    EXPECT_EQ(local.counts.boundaryTriangles, rebuilt.counts.boundaryTriangles);
-    const PairMeshValidity v = checkPairMesh(local);
-    EXPECT_EQ(v.boundaryEdgesNotShared, 0u);
-    EXPECT_EQ(v.boundaryTrianglesNotInOneVertexFace, 0u);
+    for (Index stride : {10u, 15u, 35u}) {  // every second hole filled (stride 10), with others opened
+      std::vector<Index> flip;
+      for (Index c = 0; c < dv.cellCount(); c += stride)
+        if (!dv.isInfinite(c)) flip.push_back(c);
+      for (Index c = 3; c < dv.cellCount() && stride != 10; c += 11)
+        if (holed[c]) flip.push_back(c);
+      std::sort(flip.begin(), flip.end());
+      flip.erase(std::unique(flip.begin(), flip.end()), flip.end());
+      cases.push_back({&holed, flip});
+    }
+    Vec3 lo = samples.points[0], hi = samples.points[0];
+    for (const Vec3& p : samples.points)
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+    const double tolerance = 1e-8 * std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                                              (hi[2] - lo[2]) * (hi[2] - lo[2]));
+    for (const auto& [before, cells] : cases) {
+      ASSERT_FALSE(cells.empty());
+      std::vector<std::uint8_t> after = *before;
+      for (Index c : cells) {
+        after[c] = (*before)[c] ? 0 : 1;
+        goingInner += after[c];
+      }
+      PairMesh local = builder.build(*before);
+      ASSERT_TRUE(builder.relabel(local, after, cells));
+      const PairMesh rebuilt = builder.build(after);
+      const CanonicalMesh a = canonical(local), b = canonical(rebuilt);
+      EXPECT_EQ(a.elements, b.elements) << cells.size();
+      EXPECT_EQ(a.coincident, b.coincident) << cells.size();
+      weldedClusters += b.coincident.size();
+      ASSERT_EQ(a.positions.size(), b.positions.size());
+      for (const auto& [n, p] : a.positions)
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(p[k], b.positions.at(n)[k], 2 * tolerance) << n;
+      EXPECT_EQ(orientedSet(local.boundaryTriangles), orientedSet(rebuilt.boundaryTriangles));
+      EXPECT_EQ(local.counts.innerCells, rebuilt.counts.innerCells);
+      EXPECT_EQ(local.counts.faceVertex, rebuilt.counts.faceVertex);
+      EXPECT_EQ(local.counts.edgeEdge, rebuilt.counts.edgeEdge);
+      EXPECT_EQ(local.counts.vertexFace, rebuilt.counts.vertexFace);
+      EXPECT_EQ(local.counts.boundaryTriangles, rebuilt.counts.boundaryTriangles);
+      const PairMeshValidity v = checkPairMesh(local);
+      EXPECT_EQ(v.boundaryEdgesNotShared, 0u);
+      EXPECT_EQ(v.boundaryTrianglesNotInOneVertexFace, 0u);
+    }
   }
   EXPECT_GT(goingInner, 50u);
+  EXPECT_GT(weldedClusters, 0u);  // the grid box's welds were exercised
+}
+
+// Only the listed cells may change side, each listed once.
+TEST(PairMeshRepairSteps, LocalRelabellingRejectsInconsistentLabels) {
+  const SampleSet samples = knife(0.3);
+  const DelaunayVoronoi dv(samples.points);
+  std::vector<std::uint8_t> inner(dv.cellCount(), 0);
+  for (Index c = 0; c < dv.cellCount(); ++c) inner[c] = dv.isInfinite(c) ? 0 : 1;
+  PairMeshBuilder builder(dv, samples, nullptr);
+  const PairMesh built = builder.build(inner);
+  Index a = 0;
+  while (dv.isInfinite(a)) ++a;
+  Index b = a + 1;
+  while (dv.isInfinite(b)) ++b;
+  std::vector<std::uint8_t> after = inner;
+  after[a] = after[b] = 0;
+  PairMesh m = built;
+  EXPECT_THROW(builder.relabel(m, after, {a}), std::invalid_argument);     // b changed, not listed
+  EXPECT_THROW(builder.relabel(m, after, {a, b, a}), std::invalid_argument);  // listed twice
+  EXPECT_THROW(builder.relabel(m, inner, {a}), std::invalid_argument);     // listed, not changed
+  EXPECT_EQ(m.tets, built.tets);
+  EXPECT_TRUE(builder.relabel(m, after, {a, b}));
 }
 
 namespace {

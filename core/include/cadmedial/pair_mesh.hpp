@@ -71,7 +71,9 @@ struct PairMeshCounts {
 struct PairMesh {
   // Nodes: node i < sampleNodes is sample i (boundary vertex); then the
   // Voronoi vertices, one per inner cell (the circumcenter, unless the repair
-  // moved it); then the boundary nodes the repair put on split edges.
+  // moved it), by cell id; then the boundary nodes the repair put on split
+  // edges, and the Voronoi vertices of cells the last resort made inner
+  // (nodeCell and boundaryNode tell each node's kind).
   std::vector<Vec3> nodes;
   std::size_t sampleNodes = 0;
   std::vector<Index> nodeCell;        // per node: its Delaunay cell, kNoIndex for boundary nodes
