@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace cadmedial {
@@ -19,28 +20,30 @@ bool onBoundary(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inne
   return false;
 }
 
-// The cells around the cell's edge (i, j), starting at an outer one when
-// there is one, and the runs [begin, end) of inner cells among them.
+// The cells around the cell's edge (i, j), starting at one of the other
+// side when there is one, and the runs [begin, end) of cells on side
+// `innerSide` (inner cells, or outer ones: infinite cells are outer).
 struct EdgeRing {
   std::vector<Index> cells;
   std::vector<std::pair<std::size_t, std::size_t>> runs;
 };
-EdgeRing innerRunsAround(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, Index id, int i, int j) {
+EdgeRing runsAround(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, Index id, int i, int j,
+                    bool innerSide = true) {
   EdgeRing ring;
   auto circ = dv.triangulation().incident_cells(dv.cell(id), i, j);
   const auto start = circ;
   do ring.cells.push_back(DelaunayVoronoi::cellId(circ));
   while (++circ != start);
-  const auto firstOuter =
-      std::find_if(ring.cells.begin(), ring.cells.end(), [&](Index r) { return !isInner(dv, inner, r); });
-  std::rotate(ring.cells.begin(), firstOuter, ring.cells.end());
+  auto onSide = [&](Index r) { return isInner(dv, inner, r) == innerSide; };
+  const auto firstOther = std::find_if(ring.cells.begin(), ring.cells.end(), [&](Index r) { return !onSide(r); });
+  std::rotate(ring.cells.begin(), firstOther, ring.cells.end());
   for (std::size_t k = 0; k < ring.cells.size();) {
-    if (!isInner(dv, inner, ring.cells[k])) {
+    if (!onSide(ring.cells[k])) {
       ++k;
       continue;
     }
     std::size_t e = k;
-    while (e < ring.cells.size() && isInner(dv, inner, ring.cells[e])) ++e;
+    while (e < ring.cells.size() && onSide(ring.cells[e])) ++e;
     ring.runs.push_back({k, e});
     k = e;
   }
@@ -52,7 +55,7 @@ EdgeRing innerRunsAround(const DelaunayVoronoi& dv, const std::vector<std::uint8
 bool edgesStayManifold(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, Index id) {
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j)
-      if (innerRunsAround(dv, inner, id, i, j).runs.size() > 1) return false;
+      if (runsAround(dv, inner, id, i, j).runs.size() > 1) return false;
   return true;
 }
 
@@ -67,61 +70,56 @@ double dihedralAngle(const DelaunayVoronoi& dv, Index id, const DelaunayVoronoi:
   return std::abs(CGAL::approximate_dihedral_angle(u->point(), v->point(), other[0]->point(), other[1]->point()));
 }
 
-// The inner cells around the cell's edges that are cut off from the widest
-// run (by angle) of inner cells around the same edge: what makes the edge
-// non-manifold once the cell is outer.
-void cutOffRuns(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, Index id, std::vector<Index>& out) {
+// The cells of side `innerSide` around the cell's edges that are cut off
+// from the widest run (by angle) of that side around the same edge: what
+// makes the edge non-manifold once the cell has changed side. A run with an
+// infinite cell counts as the widest (it cannot change side).
+void cutOffRuns(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, Index id, bool innerSide,
+                std::vector<Index>& out) {
   const auto c = dv.cell(id);
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) {
-      const EdgeRing ring = innerRunsAround(dv, inner, id, i, j);
+      const EdgeRing ring = runsAround(dv, inner, id, i, j, innerSide);
       if (ring.runs.size() < 2) continue;
       std::vector<double> angle(ring.runs.size(), 0);
       for (std::size_t r = 0; r < ring.runs.size(); ++r)
         for (std::size_t k = ring.runs[r].first; k < ring.runs[r].second; ++k)
-          angle[r] += dihedralAngle(dv, ring.cells[k], c->vertex(i), c->vertex(j));
+          angle[r] += dv.isInfinite(ring.cells[k]) ? std::numeric_limits<double>::infinity()
+                                                    : dihedralAngle(dv, ring.cells[k], c->vertex(i), c->vertex(j));
       const std::size_t widest = std::max_element(angle.begin(), angle.end()) - angle.begin();
       for (std::size_t r = 0; r < ring.runs.size(); ++r)
         if (r != widest)
-          for (std::size_t k = ring.runs[r].first; k < ring.runs[r].second; ++k) out.push_back(ring.cells[k]);
+          for (std::size_t k = ring.runs[r].first; k < ring.runs[r].second; ++k)
+            if (!dv.isInfinite(ring.cells[k])) out.push_back(ring.cells[k]);
     }
 }
 
-}  // namespace
-
-std::vector<Index> boundaryCellsOfInvertedElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
-                                                   const PairMesh& mesh) {
-  std::vector<Index> cells;
-  for (std::size_t i = 0; i < mesh.size(); ++i) {
-    if (!isInverted(mesh, i)) continue;
-    for (Index n : mesh.tets[i])
-      if (!mesh.isBoundaryNode(n) && mesh.nodeCell[n] != kNoIndex && onBoundary(dv, inner, mesh.nodeCell[n]))
-        cells.push_back(mesh.nodeCell[n]);
-  }
+// The seeds change side (to inner when goingInner) together, each with the
+// runs of cells it cuts off around its edges (the thin tip of a sliver
+// wedge beyond it), grown while the total stays within 4 × seeds + 64. A
+// group with a cell that still leaves a non-manifold edge goes back as a
+// whole (its cut-off cells fix nothing without it), until none is left.
+std::vector<Index> growKeepingEdgesManifold(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
+                                            std::vector<Index> cells, bool goingInner) {
   std::sort(cells.begin(), cells.end());
   cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-  // All together: a run of cells around an edge can only go as a whole.
-  // Each candidate is the seed of a group: itself and the runs of inner
-  // cells it cuts off around its edges (the thin tip of a sliver wedge beyond
-  // it), grown while the total stays within the bound.
+  const std::uint8_t to = goingInner ? 1 : 0;
   std::vector<std::uint8_t> trial = inner;
-  for (Index id : cells) trial[id] = 0;
+  for (Index id : cells) trial[id] = to;
   const std::size_t seeds = cells.size();
   std::vector<Index> group(seeds);  // per cell: the seed it was grown from
   for (std::size_t k = 0; k < seeds; ++k) group[k] = static_cast<Index>(k);
   const std::size_t limit = 4 * cells.size() + 64;
   for (std::size_t checked = 0; checked < cells.size(); ++checked) {
     std::vector<Index> more;
-    cutOffRuns(dv, trial, cells[checked], more);
+    cutOffRuns(dv, trial, cells[checked], /*innerSide=*/!goingInner, more);
     for (Index id : more)
-      if (trial[id] && cells.size() < limit) {
-        trial[id] = 0;
+      if (trial[id] != to && cells.size() < limit) {
+        trial[id] = to;
         cells.push_back(id);
         group.push_back(group[checked]);
       }
   }
-  // A group with a cell that still leaves a non-manifold edge goes back as a
-  // whole (its cut-off cells fix nothing without it), until none is left.
   for (bool dropped = true; dropped;) {
     dropped = false;
     std::vector<std::uint8_t> dropGroup(seeds, 0);
@@ -142,6 +140,20 @@ std::vector<Index> boundaryCellsOfInvertedElements(const DelaunayVoronoi& dv, co
   }
   std::sort(cells.begin(), cells.end());
   return cells;
+}
+
+}  // namespace
+
+std::vector<Index> boundaryCellsOfInvertedElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
+                                                   const PairMesh& mesh) {
+  std::vector<Index> cells;
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    if (!isInverted(mesh, i)) continue;
+    for (Index n : mesh.tets[i])
+      if (!mesh.isBoundaryNode(n) && mesh.nodeCell[n] != kNoIndex && onBoundary(dv, inner, mesh.nodeCell[n]))
+        cells.push_back(mesh.nodeCell[n]);
+  }
+  return growKeepingEdgesManifold(dv, inner, std::move(cells), /*goingInner=*/false);
 }
 
 std::vector<Index> outerCellsAcrossInvertedElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
@@ -183,26 +195,7 @@ std::vector<Index> outerCellsAcrossInvertedElements(const DelaunayVoronoi& dv, c
       } while (++circ != first);
     }
   }
-  std::sort(cells.begin(), cells.end());
-  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-  // Those that would leave an edge with two runs of inner cells stay outer,
-  // until none is left.
-  std::vector<std::uint8_t> trial = inner;
-  for (Index id : cells) trial[id] = 1;
-  for (bool dropped = true; dropped;) {
-    dropped = false;
-    std::vector<Index> kept;
-    for (Index id : cells) {
-      if (edgesStayManifold(dv, trial, id)) {
-        kept.push_back(id);
-      } else {
-        trial[id] = 0;
-        dropped = true;
-      }
-    }
-    cells = std::move(kept);
-  }
-  return cells;
+  return growKeepingEdgesManifold(dv, inner, std::move(cells), /*goingInner=*/true);
 }
 
 }  // namespace cadmedial

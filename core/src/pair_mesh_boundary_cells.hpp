@@ -30,8 +30,10 @@ std::vector<Index> boundaryCellsOfInvertedElements(const DelaunayVoronoi& dv, co
 // elements, and next to the boundary cells holding the Voronoi nodes of
 // inverted Face-Vertex elements. Where the repair and the cells going outer
 // leave elements inverted on coarsely sampled parts (NIST CTC-01, h = 23 mm:
-// 5 -> 0 with 8 cells in two passes), this is what removes them. Cells that
-// would leave an edge with two runs of inner cells are left out. Vertices
+// 5 -> 0 with 8 cells in two passes), this is what removes them. Like the
+// cells going outer, they go with the runs of outer cells they cut off
+// around an edge (all but the widest, never one with an infinite cell), and
+// a group that would still leave a non-manifold edge stays outer. Vertices
 // are not checked. Sorted, each cell once.
 std::vector<Index> outerCellsAcrossInvertedElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
                                                     const PairMesh& mesh);
