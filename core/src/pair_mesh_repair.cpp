@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -179,13 +180,25 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
   };
 
   static constexpr double kSteps[] = {0.03125, 0.0625, 0.125, 0.25, 0.5, 0.75, 1.0};
-  auto bestPosition = [&](Index v) {
+  // The LP is for nodes among elements of the part's size. A node whose
+  // elements reach 100 × the samples' extent (the circumcenter of a nearly
+  // flat cell, 1e16 away: the exact LP over such coordinates ran for minutes
+  // without an answer) is left to the simpler candidates.
+  double extent = 0;
+  {
+    Vec3 lo = m.nodes[0], hi = m.nodes[0];
+    for (std::size_t i = 0; i < m.sampleNodes; ++i)
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], m.nodes[i][k]), hi[k] = std::max(hi[k], m.nodes[i][k]);
+    extent = std::sqrt(squaredLength(lo, hi));
+  }
+  auto bestPosition = [&](Index v) -> std::optional<Vec3> {
     std::vector<std::array<Index, 4>> elements;
     double far = 0;
     for (Index k = offsets[v]; k < offsets[v + 1]; ++k) {
       elements.push_back(m.tets[incident[k]]);
       for (Index u : m.tets[incident[k]]) far = std::max(far, squaredLength(m.nodes[v], m.nodes[u]));
     }
+    if (!(std::sqrt(far) <= 100 * extent)) return std::nullopt;
     return nearestValidNodePosition(m.nodes, v, elements, 0.5 * std::sqrt(far));
   };
 
