@@ -1,6 +1,7 @@
 #include "cadmedial/pair_mesh.hpp"
 #include "pair_mesh_boundary_cells.hpp"
 #include "pair_mesh_builder.hpp"
+#include "pair_mesh_edit.hpp"
 #include "pair_mesh_element_checks.hpp"
 #include "pair_mesh_flat_cells.hpp"
 
@@ -94,8 +95,7 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
         c.invertedBeforeRepair = mesh.counts.invertedBeforeRepair;
         c.relabelledFlatCells = relabelled;
         c.relabelledBoundaryCells = mesh.counts.relabelledBoundaryCells + cells.size();
-        c.splitEdges = static_cast<std::size_t>(std::count(
-            trial.boundaryNode.begin() + static_cast<std::ptrdiff_t>(trial.sampleNodes), trial.boundaryNode.end(), 1));
+        c.splitEdges = splitNodeCount(trial);
         c.movedNodes += mesh.counts.movedNodes;
         c.retriangulatedPolygons += mesh.counts.retriangulatedPolygons;
         trial.seconds = mesh.seconds;

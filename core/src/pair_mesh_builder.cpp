@@ -1,4 +1,5 @@
 #include "pair_mesh_builder.hpp"
+#include "pair_mesh_edit.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,26 +16,13 @@ constexpr int kEdgeI[6] = {0, 0, 0, 1, 1, 2};
 constexpr int kEdgeJ[6] = {1, 2, 3, 2, 3, 3};
 constexpr int kEdgeOf[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
 
-// Drops nodes, keeping the others in their order. (The repair that follows
-// visits candidate nodes in index order, and its result depends on that
-// order: NIST CTC-01 ends with 0 inverted elements with added cells' nodes
-// appended, 1 with them sorted among the Voronoi nodes by cell id.)
-void dropNodes(PairMesh& m, const std::vector<std::uint8_t>& drop) {
-  std::vector<Index> renumber(m.nodes.size(), kNoIndex);
-  Index next = 0;
-  for (Index n = 0; n < m.nodes.size(); ++n) {
-    if (drop[n]) continue;
-    renumber[n] = next;
-    m.nodes[next] = m.nodes[n];
-    m.nodeCell[next] = m.nodeCell[n];
-    m.boundaryNode[next] = m.boundaryNode[n];
-    ++next;
-  }
-  m.nodes.resize(next);
-  m.nodeCell.resize(next);
-  m.boundaryNode.resize(next);
-  for (auto& t : m.tets)
-    for (Index& v : t) v = renumber[v];
+// The samples of a cell's facet opposite its local vertex `opposite`, sorted.
+std::array<Index, 3> facetSamples(const DelaunayVoronoi::Cell_handle& c, int opposite) {
+  std::array<Index, 3> corners{};
+  for (int u = 0, k = 0; u < 4; ++u)
+    if (u != opposite) corners[k++] = c->vertex(u)->info();
+  std::sort(corners.begin(), corners.end());
+  return corners;
 }
 
 }  // namespace
@@ -166,7 +154,9 @@ bool PairMeshBuilder::relabel(PairMesh& mesh, const std::vector<std::uint8_t>& a
   }
   std::vector<std::uint8_t> undoneNode(mesh.nodes.size(), 0);
   std::vector<std::pair<Index, int>> restoredFacets;  // (cell, local vertex opposite)
-  std::vector<std::array<Index, 3>> restoredCorners;  // the same facets' samples, sorted
+  // Per cell that stays inner: the boundary facets whose Vertex-Face
+  // elements go (restored ones, and those an added cell now covers).
+  std::unordered_map<Index, std::vector<std::array<Index, 3>>> replacedFacets;
   std::vector<std::tuple<Cell_handle, int, int>> restoredEdges;  // undone edges that are not the cells' own
   std::vector<Cell_handle> ring;
   for (std::size_t next = 0; next < toUndo.size(); ++next) {
@@ -189,40 +179,26 @@ bool PairMeshBuilder::relabel(PairMesh& mesh, const std::vector<std::uint8_t>& a
           continue;
         if (std::find(restoredFacets.begin(), restoredFacets.end(), std::make_pair(id, w)) != restoredFacets.end())
           continue;
-        std::array<Index, 3> corners{};
-        int k = 0;
-        for (int u = 0; u < 4; ++u)
-          if (u != w) corners[k++] = c->vertex(u)->info();
+        const std::array<Index, 3> corners = facetSamples(c, w);
         for (int e = 0; e < 3; ++e)  // splits on the facet's other edges
           if (const Index other = splitNodeOfEdge.find(corners[e], corners[(e + 1) % 3]); other != kNoIndex)
             toUndo.push_back(other);
-        std::sort(corners.begin(), corners.end());
         restoredFacets.push_back({id, w});
-        restoredCorners.push_back(corners);
+        replacedFacets[id].push_back(corners);
       }
     }
   }
-  // Per cell that stays inner: the boundary facets whose Vertex-Face
-  // elements go (restored ones, and those an added cell now covers).
-  std::unordered_map<Index, std::vector<std::array<Index, 3>>> replacedFacets;
-  for (std::size_t k = 0; k < restoredFacets.size(); ++k)
-    replacedFacets[restoredFacets[k].first].push_back(restoredCorners[k]);
   for (Index c : cells) {
     if (!added[c]) continue;
     for (int i = 0; i < 4; ++i) {
       const Index n = DelaunayVoronoi::cellId(dv_.cell(c)->neighbor(i));
-      if (!innerBefore(n) || gone[n]) continue;
-      std::array<Index, 3> corners{};
-      for (int u = 0, k = 0; u < 4; ++u)
-        if (u != i) corners[k++] = dv_.cell(c)->vertex(u)->info();
-      std::sort(corners.begin(), corners.end());
-      replacedFacets[n].push_back(corners);
+      if (innerBefore(n) && !gone[n]) replacedFacets[n].push_back(facetSamples(dv_.cell(c), i));
     }
   }
 
   // Out: the elements of those edges and split nodes, the cells'
   // Vertex-Face elements and those of the restored facets.
-  std::size_t out = 0;
+  std::vector<std::uint8_t> dropElement(mesh.size(), 0);
   for (std::size_t i = 0; i < mesh.size(); ++i) {
     const auto& t = mesh.tets[i];
     bool drop = false;
@@ -246,19 +222,9 @@ bool PairMeshBuilder::relabel(PairMesh& mesh, const std::vector<std::uint8_t>& a
         break;
       }
     }
-    if (drop) continue;
-    mesh.tets[out] = mesh.tets[i];
-    mesh.type[out] = mesh.type[i];
-    mesh.medialSimplex[out] = mesh.medialSimplex[i];
-    mesh.boundarySimplex[out] = mesh.boundarySimplex[i];
-    mesh.onSheets[out] = mesh.onSheets[i];
-    ++out;
+    dropElement[i] = drop ? 1 : 0;
   }
-  mesh.tets.resize(out);
-  mesh.type.resize(out);
-  mesh.medialSimplex.resize(out);
-  mesh.boundarySimplex.resize(out);
-  mesh.onSheets.resize(out);
+  removeElements(mesh, dropElement);
 
   // In: the same edges' elements and the new boundary facets' Vertex-Face
   // elements under the new labels, on the nodes where they are; an added
@@ -297,23 +263,14 @@ bool PairMeshBuilder::relabel(PairMesh& mesh, const std::vector<std::uint8_t>& a
   std::vector<std::uint8_t> dropNode(mesh.nodes.size(), 0);
   for (Index n = 0; n < mesh.nodes.size(); ++n)
     dropNode[n] = undoneNode[n] || (mesh.nodeCell[n] != kNoIndex && gone[mesh.nodeCell[n]]);
-  dropNodes(mesh, dropNode);
-  mesh.boundaryTriangles.clear();
+  // (Added nodes stay after the split nodes: the repair that follows visits
+  // nodes in index order, and its result depends on it. NIST CTC-01 ends
+  // with 0 inverted elements so, 1 with them sorted among the Voronoi nodes
+  // by cell id.)
+  removeNodes(mesh, dropNode);
+  recountElements(mesh);
   PairMeshCounts& k = mesh.counts;
-  k.faceVertex = k.edgeEdge = k.vertexFace = 0;
-  for (std::size_t i = 0; i < mesh.size(); ++i) {
-    switch (mesh.type[i]) {
-      case PairElementType::FaceVertex: ++k.faceVertex; break;
-      case PairElementType::EdgeEdge: ++k.edgeEdge; break;
-      case PairElementType::VertexFace:
-        ++k.vertexFace;
-        mesh.boundaryTriangles.push_back({mesh.tets[i][1], mesh.tets[i][2], mesh.tets[i][3]});
-        break;
-    }
-  }
-  k.boundaryTriangles = mesh.boundaryTriangles.size();
-  k.splitEdges = static_cast<std::size_t>(std::count(
-      mesh.boundaryNode.begin() + static_cast<std::ptrdiff_t>(mesh.sampleNodes), mesh.boundaryNode.end(), 1));
+  k.splitEdges = splitNodeCount(mesh);
   for (Index c : cells) gone[c] ? --k.innerCells : ++k.innerCells;
   return true;
 }

@@ -18,6 +18,7 @@
 
 #include "cadmedial/edge_table.hpp"
 #include "cadmedial/pair_mesh.hpp"
+#include "pair_mesh_edit.hpp"
 #include "pair_mesh_element_checks.hpp"
 
 namespace cadmedial {
@@ -310,30 +311,8 @@ class EdgeSplitter {
   void rebuild() {
     std::vector<std::uint8_t> drop(m_.size(), 0);
     for (std::size_t i : removed_) drop[i] = 1;
-    std::size_t out = 0;
-    for (std::size_t i = 0; i < m_.size(); ++i) {
-      if (drop[i]) continue;
-      m_.tets[out] = m_.tets[i];
-      m_.type[out] = m_.type[i];
-      m_.medialSimplex[out] = m_.medialSimplex[i];
-      m_.boundarySimplex[out] = m_.boundarySimplex[i];
-      m_.onSheets[out] = m_.onSheets[i];
-      ++out;
-    }
-    m_.tets.resize(out);
-    m_.type.resize(out);
-    m_.medialSimplex.resize(out);
-    m_.boundarySimplex.resize(out);
-    m_.onSheets.resize(out);
-    m_.boundaryTriangles.clear();
-    m_.counts.edgeEdge = m_.counts.vertexFace = 0;
-    for (std::size_t i = 0; i < out; ++i) {
-      if (m_.type[i] == PairElementType::EdgeEdge) ++m_.counts.edgeEdge;
-      if (m_.type[i] != PairElementType::VertexFace) continue;
-      ++m_.counts.vertexFace;
-      m_.boundaryTriangles.push_back({m_.tets[i][1], m_.tets[i][2], m_.tets[i][3]});
-    }
-    m_.counts.boundaryTriangles = m_.boundaryTriangles.size();
+    removeElements(m_, drop);
+    recountElements(m_);
   }
 
   PairMesh& m_;

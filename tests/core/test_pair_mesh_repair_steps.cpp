@@ -155,6 +155,13 @@ SampleSet knife(double slope = 0.03) {
   return s;
 }
 
+// Labels: every finite cell inner (the knife's samples span its whole hull).
+std::vector<std::uint8_t> everyFiniteCell(const DelaunayVoronoi& dv) {
+  std::vector<std::uint8_t> inner(dv.cellCount(), 0);
+  for (Index c = 0; c < dv.cellCount(); ++c) inner[c] = dv.isInfinite(c) ? 0 : 1;
+  return inner;
+}
+
 // Inner cells around every edge of the triangulation form at most one run.
 std::size_t nonManifoldEdges(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner) {
   std::size_t bad = 0;
@@ -189,8 +196,7 @@ std::size_t nonManifoldEdges(const DelaunayVoronoi& dv, const std::vector<std::u
 TEST(PairMeshRepairSteps, RelabelledBoundaryCellsKeepEveryEdgeManifold) {
   const SampleSet samples = knife();
   const DelaunayVoronoi dv(samples.points);
-  std::vector<std::uint8_t> inner(dv.cellCount(), 0);
-  for (Index c = 0; c < dv.cellCount(); ++c) inner[c] = dv.isInfinite(c) ? 0 : 1;
+  const std::vector<std::uint8_t> inner = everyFiniteCell(dv);
   ASSERT_EQ(nonManifoldEdges(dv, inner), 0u);
   const PairMesh built = buildPairMesh(dv, samples, inner, nullptr, false);
   ASSERT_EQ(built.counts.relabelledFlatCells, 0u);  // `inner` is the mesh's own labels
@@ -236,8 +242,7 @@ TEST(PairMeshRepairSteps, RelabellingThatDoesNotHelpIsRefused) {
   for (double slope : {0.03, 0.3}) {
     const SampleSet samples = knife(slope);
     const DelaunayVoronoi dv(samples.points);
-    std::vector<std::uint8_t> inner(dv.cellCount(), 0);
-    for (Index c = 0; c < dv.cellCount(); ++c) inner[c] = dv.isInfinite(c) ? 0 : 1;
+    const std::vector<std::uint8_t> inner = everyFiniteCell(dv);
     PairMesh repairedOnly = buildPairMesh(dv, samples, inner, nullptr, false);
     const std::size_t leftByRepair = repairFlippedElements(repairedOnly, dv);
     ASSERT_GT(leftByRepair, 0u) << slope;
@@ -307,8 +312,7 @@ TEST(PairMeshRepairSteps, LocalRelabellingEqualsARebuild) {
   std::size_t goingInner = 0, weldedClusters = 0;
   for (const SampleSet& samples : {knife(0.3), gridBoxSamples(5, 0.2)}) {
     const DelaunayVoronoi dv(samples.points);
-    std::vector<std::uint8_t> full(dv.cellCount(), 0);
-    for (Index c = 0; c < dv.cellCount(); ++c) full[c] = dv.isInfinite(c) ? 0 : 1;
+    const std::vector<std::uint8_t> full = everyFiniteCell(dv);
     std::vector<std::uint8_t> holed = full;
     for (Index c = 0; c < dv.cellCount(); c += 5) holed[c] = 0;
     PairMeshBuilder builder(dv, samples, nullptr);
@@ -378,8 +382,7 @@ TEST(PairMeshRepairSteps, LocalRelabellingEqualsARebuild) {
 TEST(PairMeshRepairSteps, LocalRelabellingRejectsInconsistentLabels) {
   const SampleSet samples = knife(0.3);
   const DelaunayVoronoi dv(samples.points);
-  std::vector<std::uint8_t> inner(dv.cellCount(), 0);
-  for (Index c = 0; c < dv.cellCount(); ++c) inner[c] = dv.isInfinite(c) ? 0 : 1;
+  const std::vector<std::uint8_t> inner = everyFiniteCell(dv);
   PairMeshBuilder builder(dv, samples, nullptr);
   const PairMesh built = builder.build(inner);
   Index a = 0;
@@ -432,8 +435,7 @@ bool volumesAddUpExactly(const PairMesh& m) {
 TEST(PairMeshRepairSteps, LocalRelabellingUndoesSplitEdges) {
   const SampleSet samples = knife();
   const DelaunayVoronoi dv(samples.points);
-  std::vector<std::uint8_t> inner(dv.cellCount(), 0);
-  for (Index c = 0; c < dv.cellCount(); ++c) inner[c] = dv.isInfinite(c) ? 0 : 1;
+  const std::vector<std::uint8_t> inner = everyFiniteCell(dv);
   PairMeshBuilder builder(dv, samples, nullptr);
   PairMesh repaired = builder.build(inner);
   repairFlippedElements(repaired, dv);
@@ -507,6 +509,14 @@ bool insideCuspBlock(const Vec3& p) {
   return p[0] * p[0] + (p[2] - kCuspRadius) * (p[2] - kCuspRadius) > kCuspRadius * kCuspRadius;
 }
 
+// The exact labels: a cell is inner when its circumcenter is in the block.
+std::vector<std::uint8_t> cuspBlockLabels(const DelaunayVoronoi& dv) {
+  std::vector<std::uint8_t> inner(dv.cellCount(), 0);
+  for (Index c = 0; c < dv.cellCount(); ++c)
+    inner[c] = !dv.isInfinite(c) && insideCuspBlock(dv.circumcenter(c)) ? 1 : 0;
+  return inner;
+}
+
 double cuspBlockVolume() {
   const double r = kCuspRadius, d = kCuspTop - kCuspRadius;  // chord at z = top, d above the axis
   const double capAbove = r * r * std::acos(d / r) - d * std::sqrt(r * r - d * d);
@@ -578,9 +588,7 @@ TEST(PairMeshRepairSteps, RelabellingInTheCuspLeavesNothingInverted) {
     for (unsigned seed = 1; seed <= 6; ++seed) {
       const SampleSet samples = cuspBlock(h, seed);
       const DelaunayVoronoi dv(samples.points);
-      std::vector<std::uint8_t> inner(dv.cellCount(), 0);
-      for (Index c = 0; c < dv.cellCount(); ++c)
-        inner[c] = !dv.isInfinite(c) && insideCuspBlock(dv.circumcenter(c)) ? 1 : 0;
+      const std::vector<std::uint8_t> inner = cuspBlockLabels(dv);
       PairMesh repairedOnly = buildPairMesh(dv, samples, inner, nullptr, false);
       const std::size_t leftByRepair = repairFlippedElements(repairedOnly, dv);
       const PairMesh m = buildPairMesh(dv, samples, inner);
@@ -602,8 +610,7 @@ namespace {
 
 void outerCellGoingInnerLeavesNothingInverted(const SampleSet& samples) {
   const DelaunayVoronoi dv(samples.points);
-  std::vector<std::uint8_t> inner(dv.cellCount(), 0);
-  for (Index c = 0; c < dv.cellCount(); ++c) inner[c] = !dv.isInfinite(c) && insideCuspBlock(dv.circumcenter(c)) ? 1 : 0;
+  const std::vector<std::uint8_t> inner = cuspBlockLabels(dv);
   PairMesh repairedOnly = buildPairMesh(dv, samples, inner, nullptr, false);
   ASSERT_GT(repairFlippedElements(repairedOnly, dv), 0u);
   const PairMesh m = buildPairMesh(dv, samples, inner);
