@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
   runCmd->add_option("--rho", run.params.rho, "Ratio condition threshold (default 8)")->check(CLI::PositiveNumber);
   bool keepTopologyArtefacts = false;
   runCmd->add_flag("--keep-topology-artefacts", keepTopologyArtefacts,
-                   "Neither close one-facet holes nor drop one-point or sub-resolution islands of the inner axis "
+                   "Neither close one-facet holes nor drop one-point, forced-only or sub-resolution islands of the inner axis "
                    "(to see the raw Angle/Ratio selection; ARCHITECTURE.md)");
   bool seedAngleTest = false;
   runCmd->add_flag("--seed-angle-test", seedAngleTest,
@@ -110,6 +110,7 @@ int main(int argc, char** argv) {
         run.params.fillSingleFacetHoles = false;
         run.params.islandRadiusFraction = 0;
         run.params.dropPointIslands = false;
+        run.params.dropForcedOnlyIslands = false;
       }
       return runRunCommand(run);
     }

@@ -91,6 +91,7 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
   if (params.fillSingleFacetHoles) r.counts.singleFacetHolesFilled = fillSingleFacetHoles(dv, selected, r);
   if (params.dropPointIslands)
     r.counts.pointIslands = dropPointIslands(r, 1e-9 * samples.bboxDiagonal(), nullptr);
+  if (params.dropForcedOnlyIslands) r.counts.forcedOnlyIslands = dropForcedOnlyIslands(r, nullptr);
   if (params.islandRadiusFraction > 0) {
     const double spacing = samples.spacing > 0 ? samples.spacing : samples.bboxDiagonal() / 40;
     r.counts.subResolutionIslands =

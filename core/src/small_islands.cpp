@@ -133,4 +133,28 @@ std::size_t dropPointIslands(MedialComplex& mc, double tolerance, std::size_t* p
   return removeComponents(mc, comps, drop, polygonsRemoved);
 }
 
+// Why: a convex-edge or corner triangle completes the axis from a feature to
+// the sheet that the Angle and Ratio conditions kept there. Where they
+// pruned that sheet (a weak one: the ridge between two bores of NIST CTC-01
+// flattens to tangency at its end, so the Delaunay edges across it are far
+// shorter than their balls), the completion is left with nothing to
+// complete: a component of forced triangles alone, a few millimetres wide,
+// off the rest of the axis (CTC-01: 15 of its 18 extra components). Such a
+// component is dropped, never the largest one; the feature points it held
+// are the pruned sheet's, which the filter dropped on purpose.
+std::size_t dropForcedOnlyIslands(MedialComplex& mc, std::size_t* polygonsRemoved) {
+  if (polygonsRemoved) *polygonsRemoved = 0;
+  const std::size_t nv = mc.vertices.size();
+  if (nv == 0 || mc.polygonCount() == 0) return 0;
+  const Components comps(mc);
+  std::vector<std::uint8_t> hasFacet(nv, 0);
+  for (std::size_t p = 0; p < mc.polygonCount(); ++p)
+    if (mc.provenance[p] == PolygonProvenance::DelaunayEdgeFacet)
+      hasFacet[comps.root[mc.polygonVertices[mc.polygonOffsets[p]]]] = 1;
+  std::vector<std::uint8_t> drop(nv, 0);
+  for (std::size_t v = 0; v < nv; ++v)
+    drop[v] = comps.root[v] == static_cast<Index>(v) && v != comps.keepRoot && !hasFacet[v];
+  return removeComponents(mc, comps, drop, polygonsRemoved);
+}
+
 }  // namespace cadmedial

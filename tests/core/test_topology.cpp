@@ -158,3 +158,41 @@ TEST(Topology, OnePointIslandsAreDroppedButNeverTheLargestComponent) {
   EXPECT_EQ(dropPointIslands(point, 1e-9, nullptr), 1u);
   EXPECT_EQ(point.polygonCount(), 2u);
 }
+
+TEST(Topology, ForcedOnlyIslandsAreDroppedButNeverTheLargestComponent) {
+  // Component A (vertices 0-3: a Voronoi facet and a convex-edge triangle)
+  // and island B (4-6: one convex-edge triangle whose sheet was pruned).
+  auto twoComponents = []() {
+    MedialComplex mc = complexOf(7, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}});
+    mc.provenance[1] = PolygonProvenance::ConvexEdgeTriangle;
+    mc.provenance[2] = PolygonProvenance::ConvexEdgeTriangle;
+    return mc;
+  };
+  MedialComplex mc = twoComponents();
+  std::size_t removed = 0;
+  EXPECT_EQ(dropForcedOnlyIslands(mc, &removed), 1u);
+  EXPECT_EQ(removed, 1u);
+  ASSERT_EQ(mc.vertices.size(), 4u);
+  ASSERT_EQ(mc.polygonCount(), 2u);
+  EXPECT_EQ(mc.provenance[0], PolygonProvenance::DelaunayEdgeFacet);
+  EXPECT_EQ(topologyOf(mc).beta0, 1);
+
+  // Corner and fill triangles are forced too.
+  for (const auto kind : {PolygonProvenance::CornerTriangle, PolygonProvenance::ConvexEdgeFillTriangle}) {
+    MedialComplex other = twoComponents();
+    other.provenance[2] = kind;
+    EXPECT_EQ(dropForcedOnlyIslands(other, nullptr), 1u);
+  }
+
+  // One Voronoi facet keeps an island.
+  MedialComplex withFacet = twoComponents();
+  withFacet.provenance[2] = PolygonProvenance::DelaunayEdgeFacet;
+  EXPECT_EQ(dropForcedOnlyIslands(withFacet, nullptr), 0u);
+  EXPECT_EQ(topologyOf(withFacet).beta0, 2);
+
+  // The largest component (by polygons) stays even when it is all forced.
+  MedialComplex allForced = twoComponents();
+  for (auto& p : allForced.provenance) p = PolygonProvenance::ConvexEdgeTriangle;
+  EXPECT_EQ(dropForcedOnlyIslands(allForced, nullptr), 1u);
+  EXPECT_EQ(allForced.polygonCount(), 2u);
+}

@@ -55,6 +55,10 @@ struct MedialParams {
   // within 1e-9 of the bounding-box diagonal: zero-size facets at the centre
   // of a sphere's cospherical samples) is dropped, never the largest one.
   bool dropPointIslands = true;
+  // A component of the inner complex made of forced triangles only (no
+  // Voronoi facet: the sheet they complete was pruned by the filter) is
+  // dropped, never the largest one.
+  bool dropForcedOnlyIslands = true;
   // Compute β2 (and so β1) exactly only while the 2-core left after free-face
   // collapses has at most this many polygons; otherwise β1 = β2 = -1.
   std::size_t bettiCoreLimit = 200000;

@@ -77,6 +77,13 @@ std::size_t dropSubResolutionIslands(MedialComplex& complex, double minRadius, s
 // Returns the number of components removed; *polygonsRemoved their polygons.
 std::size_t dropPointIslands(MedialComplex& complex, double tolerance, std::size_t* polygonsRemoved);
 
+// Removes every connected component, except the one with the most polygons,
+// that has no Voronoi facet (forced triangles only: a feature's completion
+// whose sheet the filter pruned, see small_islands.cpp), and the vertices no
+// polygon uses any more. Returns the number of components removed;
+// *polygonsRemoved their polygons.
+std::size_t dropForcedOnlyIslands(MedialComplex& complex, std::size_t* polygonsRemoved);
+
 ComplexEdges buildComplexEdges(const MedialComplex& complex);
 
 // Sheets = maximal sets of polygons connected across edges shared by exactly
