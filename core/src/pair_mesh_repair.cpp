@@ -132,6 +132,7 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
   // nodes (reachable through elements, within 5 % of the element size of
   // the seed) to one point makes the elements between them flat.
   auto collapseNodeClusters = [&]() {
+    bool collapsed = false;
     for (std::size_t i = 0; i < m.tets.size(); ++i) {
       if (!negative(i)) continue;
       const double size = std::cbrt(negligibleVolume(m, i) * 1e12);  // longest edge
@@ -175,8 +176,10 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
         m.nodes[cluster[k]] = best && bestCount < before ? *best : start[k];
         if (best && bestCount < before) moved[cluster[k]] = 1;
       }
+      collapsed = collapsed || (best && bestCount < before);
       for (Index v : cluster) flagAround(v);
     }
+    return collapsed;
   };
 
   static constexpr double kSteps[] = {0.03125, 0.0625, 0.125, 0.25, 0.5, 0.75, 1.0};
@@ -204,8 +207,13 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
 
   std::size_t bad = flagAll();
   for (int round = 0; round < rounds && bad > 0; ++round) {
+    // A round is a function of the mesh (and of which half of the rounds it
+    // is in): after a round that changed nothing, the rest of its half would
+    // change nothing either.
+    bool changedMesh = false;
     // Moves fold Voronoi polygons that another triangulation keeps positive.
     if (const std::size_t changed = retriangulateFaceVertexPolygons(m, &badFlag)) {
+      changedMesh = true;
       m.counts.retriangulatedPolygons += changed;
       buildIncidence();
       bad = flagAll();
@@ -265,12 +273,16 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
       }
       m.nodes[v] = best;
       flagAround(v);
-      if (best != start) moved[v] = 1;
+      if (best != start) moved[v] = changedMesh = true;
     }
     // Only when single moves have stalled (round past half): collapsing
     // clusters trades elements and is the rougher tool.
-    if (2 * round >= rounds) collapseNodeClusters();
+    if (2 * round >= rounds && collapseNodeClusters()) changedMesh = true;
     bad = static_cast<std::size_t>(std::count(badFlag.begin(), badFlag.end(), 1));
+    if (!changedMesh) {
+      if (2 * round >= rounds) break;
+      round = (rounds + 1) / 2 - 1;  // on to the first round that collapses clusters
+    }
   }
   if (bad > 0) {
     if (const std::size_t changed = retriangulateFaceVertexPolygons(m, &badFlag)) {
