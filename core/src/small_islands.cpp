@@ -30,6 +30,16 @@ struct Components {
   Index keepRoot = 0;
 };
 
+// Per vertex: 1 at the root of each component that has a polygon whose
+// provenance satisfies `wanted`.
+template <typename Wanted>
+std::vector<std::uint8_t> rootsWithPolygon(const MedialComplex& mc, const Components& comps, Wanted wanted) {
+  std::vector<std::uint8_t> flag(mc.vertices.size(), 0);
+  for (std::size_t p = 0; p < mc.polygonCount(); ++p)
+    if (wanted(mc.provenance[p])) flag[comps.root[mc.polygonVertices[mc.polygonOffsets[p]]]] = 1;
+  return flag;
+}
+
 // Removes the polygons of the components whose root has drop[root] != 0 and
 // the vertices no polygon uses any more; returns how many components.
 std::size_t removeComponents(MedialComplex& mc, const Components& comps, const std::vector<std::uint8_t>& dropRoot,
@@ -95,10 +105,8 @@ std::size_t dropSubResolutionIslands(MedialComplex& mc, double minRadius, std::s
   const Components comps(mc);
   std::vector<double> maxRadius(nv, -1.0);
   for (std::size_t v = 0; v < nv; ++v) maxRadius[comps.root[v]] = std::max(maxRadius[comps.root[v]], mc.radius[v]);
-  std::vector<std::uint8_t> attached(nv, 0);
-  for (std::size_t p = 0; p < mc.polygonCount(); ++p)
-    if (mc.provenance[p] != PolygonProvenance::DelaunayEdgeFacet)
-      attached[comps.root[mc.polygonVertices[mc.polygonOffsets[p]]]] = 1;
+  const std::vector<std::uint8_t> attached =
+      rootsWithPolygon(mc, comps, [](PolygonProvenance p) { return p != PolygonProvenance::DelaunayEdgeFacet; });
   std::vector<std::uint8_t> drop(nv, 0);
   for (std::size_t v = 0; v < nv; ++v)
     drop[v] = comps.root[v] == static_cast<Index>(v) && v != comps.keepRoot && !attached[v] && maxRadius[v] < minRadius;
@@ -147,10 +155,8 @@ std::size_t dropForcedOnlyIslands(MedialComplex& mc, std::size_t* polygonsRemove
   const std::size_t nv = mc.vertices.size();
   if (nv == 0 || mc.polygonCount() == 0) return 0;
   const Components comps(mc);
-  std::vector<std::uint8_t> hasFacet(nv, 0);
-  for (std::size_t p = 0; p < mc.polygonCount(); ++p)
-    if (mc.provenance[p] == PolygonProvenance::DelaunayEdgeFacet)
-      hasFacet[comps.root[mc.polygonVertices[mc.polygonOffsets[p]]]] = 1;
+  const std::vector<std::uint8_t> hasFacet =
+      rootsWithPolygon(mc, comps, [](PolygonProvenance p) { return p == PolygonProvenance::DelaunayEdgeFacet; });
   std::vector<std::uint8_t> drop(nv, 0);
   for (std::size_t v = 0; v < nv; ++v)
     drop[v] = comps.root[v] == static_cast<Index>(v) && v != comps.keepRoot && !hasFacet[v];
