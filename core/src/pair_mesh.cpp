@@ -64,7 +64,7 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
     // first repair left them). A trial is kept only when fewer elements stay
     // inverted and no more need repair (flat ones included), and while the
     // cells relabelled hold at most 1e-3 of the enclosed volume in all.
-    const double budget = inverted > 0 ? 1e-3 * std::abs(checkPairMesh(mesh).enclosedVolume) : 0;
+    const double budget = inverted > 0 ? 1e-3 * std::abs(boundaryEnclosedVolume(mesh)) : 0;
     double changed = 0;
     std::size_t needingRepair = inverted > 0 ? countElementsNeedingRepair(mesh.nodes, mesh.tets) : 0;
     for (int pass = 0; pass < 3 && inverted > 0; ++pass) {

@@ -11,22 +11,6 @@ namespace cadmedial {
 
 namespace {
 
-// Volume enclosed by closed, outward triangles: Σ det(x - o, y - o, z - o) / 6
-// about a point o near the surface (less cancellation than about the origin).
-double enclosedVolume(const PairMesh& m) {
-  if (m.boundaryTriangles.empty()) return 0;
-  const Vec3 o = m.nodes[m.boundaryTriangles[0][0]];
-  double sum = 0;
-  for (const auto& t : m.boundaryTriangles) {
-    const Vec3 &x = m.nodes[t[0]], &y = m.nodes[t[1]], &z = m.nodes[t[2]];
-    const double a[3] = {x[0] - o[0], x[1] - o[1], x[2] - o[2]};
-    const double b[3] = {y[0] - o[0], y[1] - o[1], y[2] - o[2]};
-    const double c[3] = {z[0] - o[0], z[1] - o[1], z[2] - o[2]};
-    sum += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
-  }
-  return sum / 6.0;
-}
-
 struct TriangleKey {
   std::array<Index, 3> v;
   explicit TriangleKey(std::array<Index, 3> t) : v(t) { std::sort(v.begin(), v.end()); }
@@ -42,6 +26,22 @@ struct TriangleKeyHash {
 
 }  // namespace
 
+// Volume enclosed by closed, outward triangles: Σ det(x - o, y - o, z - o) / 6
+// about a point o near the surface (less cancellation than about the origin).
+double boundaryEnclosedVolume(const PairMesh& m) {
+  if (m.boundaryTriangles.empty()) return 0;
+  const Vec3 o = m.nodes[m.boundaryTriangles[0][0]];
+  double sum = 0;
+  for (const auto& t : m.boundaryTriangles) {
+    const Vec3 &x = m.nodes[t[0]], &y = m.nodes[t[1]], &z = m.nodes[t[2]];
+    const double a[3] = {x[0] - o[0], x[1] - o[1], x[2] - o[2]};
+    const double b[3] = {y[0] - o[0], y[1] - o[1], y[2] - o[2]};
+    const double c[3] = {z[0] - o[0], z[1] - o[1], z[2] - o[2]};
+    sum += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+  }
+  return sum / 6.0;
+}
+
 PairMeshValidity checkPairMesh(const PairMesh& m) {
   PairMeshValidity v;
   v.elements = m.size();
@@ -54,7 +54,7 @@ PairMeshValidity checkPairMesh(const PairMesh& m) {
     v.sumVolume += vol;
     v.sumAbsVolume += std::abs(vol);
   }
-  v.enclosedVolume = enclosedVolume(m);
+  v.enclosedVolume = boundaryEnclosedVolume(m);
   v.boundaryTriangles = m.boundaryTriangles.size();
   if (v.enclosedVolume > 0) {
     v.overlapError = (v.sumAbsVolume - std::abs(v.sumVolume)) / v.enclosedVolume;

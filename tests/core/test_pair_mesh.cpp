@@ -73,6 +73,8 @@ Checked buildAndCheck(const std::string& name, const SampleSet& samples,
   EXPECT_EQ(v.boundaryEdgesNotShared, 0u) << name;
   EXPECT_TRUE(v.valid()) << name;
   EXPECT_NEAR(v.enclosedVolume, exactVolume, volumeTolerance * exactVolume) << name;
+  // The repair budgets relabelling with it, without the element checks.
+  EXPECT_NEAR(boundaryEnclosedVolume(r.mesh), exactVolume, volumeTolerance * exactVolume) << name;
   EXPECT_GT(c.faceVertex, 0u);
   EXPECT_GT(c.edgeEdge, 0u);
   EXPECT_EQ(c.vertexFace, r.mesh.boundaryTriangles.size());

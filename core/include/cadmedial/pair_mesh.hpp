@@ -162,6 +162,10 @@ struct PairMeshValidity {
 };
 PairMeshValidity checkPairMesh(const PairMesh& mesh);
 
+// The volume its boundary triangles enclose (checkPairMesh(mesh).enclosedVolume
+// without the element checks).
+double boundaryEnclosedVolume(const PairMesh& mesh);
+
 // Iso-parametric surface at t in [0, 1] (seed 003 §4.2): one node per interim
 // edge (sample s, Voronoi node v) at (1 - t) v + t s; per element its cut:
 // Face-Vertex -> a polygon (fan-split like the pyramid), Edge-Edge -> a
