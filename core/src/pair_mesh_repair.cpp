@@ -358,6 +358,14 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance) {
     if (cluster.size() < 2) continue;
     std::vector<Vec3> start;
     for (Index v : cluster) start.push_back(m.nodes[v]);
+    // A target must be within 2 × tolerance of every member, so none is
+    // when the cluster spans more than 4 × tolerance along an axis. Checked
+    // first: chains of close pairs can hold thousands of nodes (the apex of
+    // a cone), and the member-by-member test below is quadratic.
+    Vec3 lo = start[0], hi = start[0];
+    for (const Vec3& q : start)
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], q[k]), hi[k] = std::max(hi[k], q[k]);
+    if (hi[0] - lo[0] > 4 * tolerance || hi[1] - lo[1] > 4 * tolerance || hi[2] - lo[2] > 4 * tolerance) continue;
     const std::size_t before = badAroundSet(cluster);
     bool done = false;
     std::size_t moved = 0;
