@@ -1,5 +1,6 @@
 #include "pair_mesh_builder.hpp"
 #include "pair_mesh_edit.hpp"
+#include "point_box.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -29,13 +30,7 @@ std::array<Index, 3> facetSamples(const DelaunayVoronoi::Cell_handle& c, int opp
 
 PairMeshBuilder::PairMeshBuilder(const DelaunayVoronoi& dv, const SampleSet& samples, const MedialComplex* axis)
     : dv_(dv), dt_(dv.triangulation()), samples_(samples) {
-  if (!samples.points.empty()) {
-    Vec3 lo = samples.points[0], hi = samples.points[0];
-    for (const Vec3& p : samples.points)
-      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-    weldTolerance_ = 1e-8 * std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                                      (hi[2] - lo[2]) * (hi[2] - lo[2]));
-  }
+  weldTolerance_ = 1e-8 * boxOf(samples.points.data(), samples.points.data() + samples.points.size()).diagonal();
   sheetCells_.assign(dv.cellCount(), 0);
   if (!axis) return;
   sheetFacetEdges_.reserve(axis->polygonCount());

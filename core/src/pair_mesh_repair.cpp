@@ -14,9 +14,11 @@
 #include <tbb/parallel_for.h>
 
 #include "cadmedial/pair_mesh.hpp"
+#include "cadmedial/union_find.hpp"
 #include "pair_mesh_element_checks.hpp"
 #include "pair_mesh_facet_triangulation.hpp"
 #include "pair_mesh_node_position.hpp"
+#include "point_box.hpp"
 
 namespace cadmedial {
 
@@ -187,13 +189,7 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
   // elements reach 100 × the samples' extent (the circumcenter of a nearly
   // flat cell, 1e16 away: the exact LP over such coordinates ran for minutes
   // without an answer) is left to the simpler candidates.
-  double extent = 0;
-  {
-    Vec3 lo = m.nodes[0], hi = m.nodes[0];
-    for (std::size_t i = 0; i < m.sampleNodes; ++i)
-      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], m.nodes[i][k]), hi[k] = std::max(hi[k], m.nodes[i][k]);
-    extent = std::sqrt(squaredLength(lo, hi));
-  }
+  const double extent = boxOf(m.nodes.data(), m.nodes.data() + m.sampleNodes).diagonal();
   auto bestPosition = [&](Index v) -> std::optional<Vec3> {
     std::vector<std::array<Index, 4>> elements;
     double far = 0;
@@ -315,24 +311,19 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance) {
       for (Index v : m.tets[i]) incident[fill[v]++] = static_cast<Index>(i);
   }
   // Clusters: nodes joined through elements by pairs closer than tolerance.
-  std::vector<Index> parent(n);
-  for (std::size_t v = 0; v < n; ++v) parent[v] = static_cast<Index>(v);
-  auto find = [&](Index v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  UnionFind joined(n);
   const double limit = tolerance * tolerance;
   for (const auto& t : m.tets)
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b)
         if (!m.isBoundaryNode(t[a]) && !m.isBoundaryNode(t[b]) && squaredLength(m.nodes[t[a]], m.nodes[t[b]]) <= limit)
-          parent[find(t[a])] = find(t[b]);
+          joined.unite(t[a], t[b]);
   std::vector<std::vector<Index>> clusters;
   {
     std::vector<Index> slot(n, kNoIndex);
     for (Index v = 0; v < n; ++v) {
       if (m.isBoundaryNode(v)) continue;
-      const Index r = find(v);
+      const Index r = joined.find(v);
       if (slot[r] == kNoIndex) {
         slot[r] = static_cast<Index>(clusters.size());
         clusters.emplace_back();
@@ -362,10 +353,7 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance) {
     // when the cluster spans more than 4 × tolerance along an axis. Checked
     // first: chains of close pairs can hold thousands of nodes (the apex of
     // a cone), and the member-by-member test below is quadratic.
-    Vec3 lo = start[0], hi = start[0];
-    for (const Vec3& q : start)
-      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], q[k]), hi[k] = std::max(hi[k], q[k]);
-    if (hi[0] - lo[0] > 4 * tolerance || hi[1] - lo[1] > 4 * tolerance || hi[2] - lo[2] > 4 * tolerance) continue;
+    if (boxOf(start.data(), start.data() + start.size()).widestSide() > 4 * tolerance) continue;
     const std::size_t before = badAroundSet(cluster);
     bool done = false;
     std::size_t moved = 0;
