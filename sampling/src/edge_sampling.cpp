@@ -8,66 +8,21 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepLProp_CLProps.hxx>
-#include <BRepLProp_SLProps.hxx>
-#include <BRepTools.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <IntCurvesFace_ShapeIntersector.hxx>
-#include <gp_Lin.hxx>
 #include <TopoDS.hxx>
 
+#include "face_spacing_field.hpp"
 #include "sampling_context.hpp"
 
 namespace cadmedial {
 
 namespace {
-constexpr double kCurvatureFraction = 0.15;  // spacing <= this × radius of curvature (chord error ~0.3 %)
+constexpr double kCurvatureFraction = FaceSpacingField::kCurvatureFraction;
 constexpr double kCornerBallFraction = 0.3;  // corner ball <= this × shortest incident edge
-constexpr double kLegFraction = 0.6;
-constexpr double kThicknessFraction = 0.4;   // spacing <= this × local wall thickness         // triplet leg = this × min(edge spacing, corner balls)
-
-double faceMinCurvatureRadius(const TopoDS_Face& face) {
-  BRepAdaptor_Surface surf(face, true);
-  double u0, u1, v0, v1;
-  BRepTools::UVBounds(face, u0, u1, v0, v1);
-  double maxK = 0;
-  constexpr int n = 9;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const double u = u0 + (u1 - u0) * (i + 0.5) / n, v = v0 + (v1 - v0) * (j + 0.5) / n;
-      BRepLProp_SLProps props(surf, u, v, 2, 1e-9);
-      if (!props.IsCurvatureDefined()) continue;
-      maxK = std::max({maxK, std::abs(props.MaxCurvature()), std::abs(props.MinCurvature())});
-    }
-  return maxK > 0 ? 1.0 / maxK : 1e300;
-}
-
-// Smallest wall thickness seen from a face: rays cast inward along the normal
-// from a grid of points on the face, to the first boundary hit. The medial
-// ball of a wall of thickness t has radius t/2, so a thin wall needs samples
-// spaced well below t for the Voronoi facets between its sides to be medial.
-double faceMinThickness(const TopoDS_Face& face, IntCurvesFace_ShapeIntersector& rays, double spacing) {
-  BRepAdaptor_Surface surf(face, true);
-  BRepTopAdaptor_FClass2d inFace(face, 1e-9);
-  double u0, u1, v0, v1;
-  BRepTools::UVBounds(face, u0, u1, v0, v1);
-  double thinnest = 1e300;
-  constexpr int n = 7;
-  const double skip = 1e-6 * spacing;  // ignore the face the ray starts on
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const gp_Pnt2d uv(u0 + (u1 - u0) * (i + 0.5) / n, v0 + (v1 - v0) * (j + 0.5) / n);
-      if (inFace.Perform(uv) != TopAbs_IN) continue;
-      gp_Vec n3 = outwardNormalAt(face, uv);
-      if (n3.Magnitude() < 0.5) continue;
-      const gp_Pnt p = surf.Value(uv.X(), uv.Y());
-      rays.Perform(gp_Lin(p, gp_Dir(-n3)), skip, 1e300);
-      if (!rays.IsDone()) continue;
-      for (int k = 1; k <= rays.NbPnt(); ++k) thinnest = std::min(thinnest, rays.WParameter(k));
-    }
-  return thinnest;
-}
+constexpr double kLegFraction = 0.6;         // triplet leg = this × min(edge spacing, corner balls)
 
 double edgeMinCurvatureRadius(const TopoDS_Edge& edge) {
   BRepAdaptor_Curve curve(edge);
@@ -87,21 +42,29 @@ double clampSpacing(double s, const SamplingContext& ctx) { return std::clamp(s,
 
 void computeSpacings(SamplingContext& ctx) {
   const SolidTopology& topo = ctx.topo;
-  ctx.faceSpacing.resize(topo.faceCount());
+  ctx.faceSpacing.clear();
+  ctx.faceSpacing.reserve(topo.faceCount());
   IntCurvesFace_ShapeIntersector rays;
   rays.Load(topo.solid, 1e-7);
-  for (int f = 0; f < topo.faceCount(); ++f) {
-    const double curvature = kCurvatureFraction * faceMinCurvatureRadius(topo.face(f));
-    const double thickness = kThicknessFraction * faceMinThickness(topo.face(f), rays, ctx.spacing);
-    ctx.faceSpacing[f] = clampSpacing(std::min(curvature, thickness), ctx);
-  }
+  for (int f = 0; f < topo.faceCount(); ++f)
+    ctx.faceSpacing.emplace_back(topo.face(f), rays, ctx.minSpacing, ctx.spacing);
 
+  // An edge is sampled evenly, at the smallest spacing its own curvature and
+  // its faces' fields ask for along it.
   ctx.edgeSpacing.assign(topo.edgeCount(), ctx.spacing);
   for (int e = 0; e < topo.edgeCount(); ++e) {
     if (topo.edgeDegenerate[e]) continue;
     double s = kCurvatureFraction * edgeMinCurvatureRadius(topo.edge(e));
-    for (int f : topo.edgeFaces[e])
-      if (f >= 0) s = std::min(s, ctx.faceSpacing[f]);
+    BRepAdaptor_Curve curve(topo.edge(e));
+    constexpr int n = 16;
+    for (int i = 0; i <= n; ++i) {
+      const double t = curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n;
+      for (int f : topo.edgeFaces[e])
+        if (f >= 0) {
+          const gp_Pnt2d uv = uvOnFace(topo.edge(e), topo.face(f), t);
+          s = std::min(s, ctx.faceSpacing[f].at(uv.X(), uv.Y()));
+        }
+    }
     ctx.edgeSpacing[e] = clampSpacing(s, ctx);
   }
 

@@ -106,7 +106,7 @@ SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& param
   // of samples each, which made dart throwing quadratic-like. isClear is
   // exact for any cell size, so the samples do not change.
   double largestSpacing = 0;
-  for (double s : ctx.faceSpacing) largestSpacing = std::max(largestSpacing, s);
+  for (const FaceSpacingField& field : ctx.faceSpacing) largestSpacing = std::max(largestSpacing, field.maximum());
   for (int e = 0; e < topo.edgeCount(); ++e)
     if (!topo.edgeDegenerate[e]) largestSpacing = std::max(largestSpacing, ctx.edgeSpacing[e]);
   // Cells twice that size: a dart's ball (radius 0.75 x its spacing) then

@@ -7,6 +7,7 @@
 #include <gp_Pnt2d.hxx>
 
 #include "cadmedial/sample_set.hpp"
+#include "face_spacing_field.hpp"
 #include "feature_classification.hpp"
 #include "sample_builder.hpp"
 #include "solid_topology.hpp"
@@ -22,7 +23,7 @@ struct SamplingContext {
   const std::vector<VertexFeature>& vertexFeatures;
   double spacing = 0;     // global target spacing h
   double minSpacing = 0;  // floor for curvature refinement
-  std::vector<double> faceSpacing;   // per face
+  std::vector<FaceSpacingField> faceSpacing;  // per face: graded over its UV box
   std::vector<double> edgeSpacing;   // per edge (target)
   std::vector<double> cornerRadius;  // per vertex: corner-ball radius (0: no ball)
   std::vector<Index> vertexSample;   // per vertex: its sample
@@ -36,7 +37,8 @@ struct SamplingContext {
   }
 };
 
-// Face spacing from curvature, edge spacing from curvature and incident faces,
+// Face spacing fields from curvature and wall thickness, edge spacing from
+// curvature and the incident faces' fields along the edge,
 // corner-ball radii from incident edge lengths.
 void computeSpacings(SamplingContext& ctx);
 // One sample per vertex, then every non-degenerate edge sampled by arc length

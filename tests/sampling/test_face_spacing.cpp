@@ -1,0 +1,174 @@
+// The face spacing is a graded field, not one number per face: a pointed
+// cone is fine at its apex and coarse at its base, a plate is fine only over
+// its thin part, and an even thin wall keeps its spacing between the points
+// where it was measured. Requirements are computed from the exact geometry (the
+// cone's curvature, the plate's thickness), never from the sampler's field.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <vector>
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepGProp.hxx>
+#include <BRepTools.hxx>
+#include <GProp_GProps.hxx>
+#include <IntCurvesFace_ShapeIntersector.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <gp_Vec.hxx>
+
+#include "cadmedial/sampling.hpp"
+#include "face_spacing_field.hpp"
+
+namespace cadmedial {
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Dt = CGAL::Delaunay_triangulation_3<K>;
+
+constexpr double kPoissonFraction = 0.75;  // Poisson radius = this × spacing (face_sampling.cpp)
+constexpr double kHoleRadii = 2.5;         // a maximal Poisson-disk set leaves holes of ~2 radii
+
+Dt triangulate(const SampleSet& s) {
+  std::vector<K::Point_3> pts;
+  for (const auto& p : s.points) pts.emplace_back(p[0], p[1], p[2]);
+  return Dt(pts.begin(), pts.end());
+}
+
+double nearestSample(const Dt& dt, double x, double y, double z) {
+  const K::Point_3 p(x, y, z);
+  return std::sqrt(CGAL::squared_distance(p, dt.nearest_vertex(p)->point()));
+}
+
+// Median distance from the samples accepted by `keep` to their nearest
+// other sample.
+double medianNeighbourDistance(const Dt& dt, const std::function<bool(const Vec3&)>& keep) {
+  std::vector<double> d;
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+    const K::Point_3& p = v->point();
+    if (!keep({p.x(), p.y(), p.z()})) continue;
+    std::vector<Dt::Vertex_handle> around;
+    dt.finite_adjacent_vertices(v, std::back_inserter(around));
+    double best = 1e300;
+    for (auto w : around) best = std::min(best, std::sqrt(CGAL::squared_distance(p, w->point())));
+    d.push_back(best);
+  }
+  if (d.empty()) return 0;
+  std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
+  return d[d.size() / 2];
+}
+
+// Cone of base radius 5 at z = 0 and apex at z = 50. Its lateral face needs
+// 0.15 × the curvature radius, which is rho / cos(alpha) at the circle of
+// radius rho: 0.75 at the base, down to the floor h / 16 near the apex. One
+// spacing per face made the whole face as fine as the apex (115 k samples).
+TEST(FaceSpacing, PointedConeIsGradedFromApexToBase) {
+  const TopoDS_Shape cone = BRepPrimAPI_MakeCone(5.0, 0.0, 50.0).Shape();
+  SamplingParams params;
+  params.spacing = 1.3;
+  const SolidSampling sampled = sampleSolid(cone, params);
+  const SampleSet& s = sampled.samples;
+  const Dt dt = triangulate(s);
+  const double slope = 5.0 / 50.0, cosAlpha = 1.0 / std::sqrt(1 + slope * slope);
+
+  // No hole wider than the exact requirement allows, on circles up the cone.
+  double worst = 0;  // hole / allowed
+  for (double z = 0.5; z <= 49.5; z += 0.5) {
+    const double rho = 5.0 * (1 - z / 50.0);
+    const double required = std::clamp(0.15 * rho / cosAlpha, params.spacing / 16, params.spacing);
+    for (int k = 0; k < 64; ++k) {
+      const double a = 2 * M_PI * k / 64;
+      const double hole = nearestSample(dt, rho * std::cos(a), rho * std::sin(a), z);
+      worst = std::max(worst, hole / (kHoleRadii * kPoissonFraction * required));
+    }
+  }
+  // Graded: far coarser at the base than near the apex.
+  auto onLateral = [&](const Vec3& p, double zLow, double zHigh) {
+    return p[2] > zLow && p[2] < zHigh && std::hypot(p[0], p[1]) > 0.9 * 5.0 * (1 - p[2] / 50.0);
+  };
+  const double nearBase = medianNeighbourDistance(dt, [&](const Vec3& p) { return onLateral(p, 2, 8); });
+  const double nearApex = medianNeighbourDistance(dt, [&](const Vec3& p) { return onLateral(p, 44, 47); });
+  std::printf("cone r5 h50: %zu samples; worst hole / allowed %.2f; neighbour distance near base %.3f, near apex %.3f\n",
+              s.size(), worst, nearBase, nearApex);
+  EXPECT_LE(worst, 1.0);
+  EXPECT_GT(nearBase, 4 * nearApex);
+  EXPECT_LT(s.size(), 30000u);
+}
+
+// The field of the big faces of a 200 x 120 x 1 plate at h = 2: the wall
+// (0.4 × 1) sets it everywhere on them, not only near the 7 × 7 points where
+// the thickness was measured (28 mm apart here). A 100 thick block's faces
+// stay at h.
+TEST(FaceSpacing, EvenWallKeepsItsSpacingBetweenProbes) {
+  const double h = 2.0;
+  for (const double thickness : {1.0, 100.0}) {
+    const TopoDS_Shape plate = BRepPrimAPI_MakeBox(200.0, 120.0, thickness).Shape();
+    IntCurvesFace_ShapeIntersector rays;
+    rays.Load(plate, 1e-7);
+    const double expected = std::min(h, 0.4 * thickness);
+    int bigFaces = 0;
+    for (TopExp_Explorer it(plate, TopAbs_FACE); it.More(); it.Next()) {
+      const TopoDS_Face& face = TopoDS::Face(it.Current());
+      GProp_GProps props;
+      BRepGProp::SurfaceProperties(face, props);
+      const double z = props.CentreOfMass().Z();
+      if (std::abs(z) > 1e-9 && std::abs(z - thickness) > 1e-9) continue;  // a side
+      ++bigFaces;
+      const FaceSpacingField field(face, rays, h / 16, h);
+      double u0, u1, v0, v1;
+      BRepTools::UVBounds(face, u0, u1, v0, v1);
+      double largest = 0;
+      for (int i = 0; i <= 100; ++i)
+        for (int j = 0; j <= 100; ++j) largest = std::max(largest, field.at(u0 + (u1 - u0) * i / 100, v0 + (v1 - v0) * j / 100));
+      std::printf("box 200x120x%g at h=%g, big face: field %.3f..%.3f (expected %.3f)\n", thickness, h, field.minimum(),
+                  largest, expected);
+      EXPECT_LE(largest, expected * (1 + 1e-9));
+      EXPECT_GE(field.minimum(), expected * (1 - 1e-9));
+    }
+    EXPECT_EQ(bigFaces, 2);
+  }
+}
+
+// An L-shaped bar, extruded: 80 mm of it 10 thick, then a 20 mm flange 1.5
+// thick. Its bottom face is one face across both: fine (0.4 × 1.5) under the
+// flange, coarse under the thick part.
+TEST(FaceSpacing, StepPlateIsFineOnlyUnderTheThinPart) {
+  BRepBuilderAPI_MakePolygon profile;
+  for (const auto& [x, z] : std::vector<std::pair<double, double>>{{0, 0}, {100, 0}, {100, 1.5}, {80, 1.5}, {80, 10}, {0, 10}})
+    profile.Add(gp_Pnt(x, 0, z));
+  profile.Close();
+  const TopoDS_Shape bar =
+      BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(profile.Wire()).Face(), gp_Vec(0, 40, 0)).Shape();
+  SamplingParams params;
+  params.spacing = 3.0;
+  const SolidSampling sampled = sampleSolid(bar, params);
+  const SampleSet& s = sampled.samples;
+  const Dt dt = triangulate(s);
+
+  double widestUnderFlange = 0;
+  for (double x = 81; x <= 99; x += 0.25)
+    for (double y = 1; y <= 39; y += 0.25) widestUnderFlange = std::max(widestUnderFlange, nearestSample(dt, x, y, 0));
+  auto onBottom = [](double xLow, double xHigh) {
+    return [=](const Vec3& p) { return std::abs(p[2]) < 1e-9 && p[0] > xLow && p[0] < xHigh && p[1] > 2 && p[1] < 38; };
+  };
+  const double underThick = medianNeighbourDistance(dt, onBottom(5, 50));
+  const double underFlange = medianNeighbourDistance(dt, onBottom(85, 98));
+  std::printf("step bar: %zu samples; widest hole under the flange %.3f (allowed %.3f); neighbour distance on the "
+              "bottom under the thick part %.3f, under the flange %.3f\n",
+              s.size(), widestUnderFlange, kHoleRadii * kPoissonFraction * 0.4 * 1.5, underThick, underFlange);
+  EXPECT_LE(widestUnderFlange, kHoleRadii * kPoissonFraction * 0.4 * 1.5);
+  EXPECT_GT(underThick, 2 * underFlange);
+}
+
+}  // namespace
+}  // namespace cadmedial
