@@ -24,6 +24,10 @@ int main(int argc, char** argv) {
   sampleCmd->add_option("-o,--output", sample.outDir, "Output directory")->required();
   sampleCmd->add_option("--spacing", sample.spacing, "Target sample spacing h in model units (default: diagonal/40)")
       ->check(CLI::PositiveNumber);
+  sampleCmd->add_flag("--graded-spacing", sample.gradedSpacing,
+                      "Grade the sample spacing within each face (fine only where curvature or a thin wall needs it, e.g. at a "
+                  "cone's apex) instead of one minimum per face; off by default while the pair-mesh repair is "
+                  "sensitive to it (ARCHITECTURE.md)");
 
   RunCommandOptions run;
   CLI::App* runCmd = app.add_subcommand(
@@ -34,6 +38,9 @@ int main(int argc, char** argv) {
   runCmd->add_option("-o,--output", run.outDir, "Output directory")->required();
   runCmd->add_option("--spacing", run.spacing, "Target sample spacing h in model units (default: diagonal/40)")
       ->check(CLI::PositiveNumber);
+  runCmd->add_flag("--graded-spacing", run.gradedSpacing, "Grade the sample spacing within each face (fine only where curvature or a thin wall needs it, e.g. at a "
+                  "cone's apex) instead of one minimum per face; off by default while the pair-mesh repair is "
+                  "sensitive to it (ARCHITECTURE.md)");
   runCmd->add_option("--theta", run.params.thetaDeg,
                      "Angle condition threshold in degrees (default 5; 22.5 = pi/8 for point clouds and meshes)")
       ->check(CLI::Range(0.0, 89.0));
@@ -71,6 +78,7 @@ int main(int argc, char** argv) {
   batchCmd->add_flag("--eval", batch.eval, "Also run `cadmedial eval` on each file's outputs");
   // Passed on to `cadmedial run` as given.
   batchCmd->add_option("--spacing", "As for run")->check(CLI::PositiveNumber);
+  batchCmd->add_flag("--graded-spacing", "As for run");
   batchCmd->add_option("--theta", "As for run")->check(CLI::Range(0.0, 89.0));
   batchCmd->add_option("--rho", "As for run")->check(CLI::PositiveNumber);
   batchCmd->add_flag("--no-oracle", "As for run");
@@ -118,7 +126,7 @@ int main(int argc, char** argv) {
       for (const char* name : {"--spacing", "--theta", "--rho"})
         if (const CLI::Option* o = batchCmd->get_option(name); o->count() > 0)
           batch.runArguments.insert(batch.runArguments.end(), {name, o->as<std::string>()});
-      for (const char* flag : {"--no-oracle", "--pair-mesh"})
+      for (const char* flag : {"--no-oracle", "--pair-mesh", "--graded-spacing"})
         if (batchCmd->get_option(flag)->count() > 0) batch.runArguments.push_back(flag);
       return runBatchCommand(batch);
     }

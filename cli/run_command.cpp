@@ -58,6 +58,7 @@ int runRunCommand(const RunCommandOptions& options) {
   for (std::size_t i = 0; i < model.solids.size(); ++i) {
     SamplingParams sampling;
     sampling.spacing = options.spacing;
+    sampling.gradedSpacing = options.gradedSpacing;
     const auto solidStart = Clock::now();
     MedialParams params = options.params;
     params.computeTopology = false;  // below, while the files are written
@@ -101,6 +102,7 @@ int runRunCommand(const RunCommandOptions& options) {
     summary["model"] = options.model;
     summary["solid"] = i;
     summary["spacing"] = sampled.samples.spacing;
+    summary["graded_spacing"] = options.gradedSpacing;
     summary["seconds"]["read"] = secondsRead;
     summary["seconds"]["write"] = secondsWrite;
     // Wall time from the file read to this solid's outputs: the stages

@@ -23,6 +23,7 @@ int runSampleCommand(const SampleCommandOptions& options) {
   for (std::size_t i = 0; i < model.solids.size(); ++i) {
     SamplingParams params;
     params.spacing = options.spacing;
+    params.gradedSpacing = options.gradedSpacing;
     const SolidSampling result = sampleSolid(model.solids[i], params);
     const SamplingReport& r = result.report;
     const std::string dir = (std::filesystem::path(options.outDir) / ("solid_" + std::to_string(i))).string();
@@ -33,6 +34,7 @@ int runSampleCommand(const SampleCommandOptions& options) {
     summary["model"] = options.model;
     summary["solid"] = i;
     summary["spacing"] = result.samples.spacing;
+    summary["graded_spacing"] = options.gradedSpacing;
     writeFileAtomically(dir + "/sampling.json", [&](std::ofstream& out) { out << summary.dump(2) << "\n"; });
 
     const auto& f = r.features;

@@ -47,7 +47,7 @@ void computeSpacings(SamplingContext& ctx) {
   IntCurvesFace_ShapeIntersector rays;
   rays.Load(topo.solid, 1e-7);
   for (int f = 0; f < topo.faceCount(); ++f)
-    ctx.faceSpacing.emplace_back(topo.face(f), rays, ctx.minSpacing, ctx.spacing);
+    ctx.faceSpacing.emplace_back(topo.face(f), rays, ctx.minSpacing, ctx.spacing, ctx.gradedSpacing);
 
   // An edge is sampled evenly, at the smallest spacing its own curvature and
   // its faces' fields ask for along it.
@@ -56,14 +56,19 @@ void computeSpacings(SamplingContext& ctx) {
     if (topo.edgeDegenerate[e]) continue;
     double s = kCurvatureFraction * edgeMinCurvatureRadius(topo.edge(e));
     BRepAdaptor_Curve curve(topo.edge(e));
-    constexpr int n = 16;
-    for (int i = 0; i <= n; ++i) {
-      const double t = curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n;
-      for (int f : topo.edgeFaces[e])
-        if (f >= 0) {
-          const gp_Pnt2d uv = uvOnFace(topo.edge(e), topo.face(f), t);
-          s = std::min(s, ctx.faceSpacing[f].at(uv.X(), uv.Y()));
-        }
+    for (int f : topo.edgeFaces[e]) {
+      if (f < 0) continue;
+      const FaceSpacingField& field = ctx.faceSpacing[f];
+      if (field.minimum() == field.maximum()) {  // uniform: no need to find the edge on the face
+        s = std::min(s, field.minimum());
+        continue;
+      }
+      constexpr int n = 16;
+      for (int i = 0; i <= n; ++i) {
+        const gp_Pnt2d uv = uvOnFace(topo.edge(e), topo.face(f),
+                                     curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n);
+        s = std::min(s, field.at(uv.X(), uv.Y()));
+      }
     }
     ctx.edgeSpacing[e] = clampSpacing(s, ctx);
   }

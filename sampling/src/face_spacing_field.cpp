@@ -106,11 +106,28 @@ double curvatureAt(const BRepAdaptor_Surface& surf, double u, double v, double d
 }  // namespace
 
 FaceSpacingField::FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeIntersector& solidRays, double floor,
-                                   double cap) {
+                                   double cap, bool graded) {
   BRepAdaptor_Surface surf(face, true);
   BRepTools::UVBounds(face, u0_, u1_, v0_, v1_);
   ThicknessProber prober(face, surf, solidRays, floor, cap);
   const std::vector<Probe> thickness = thicknessProbes(prober, u0_, u1_, v0_, v1_);
+
+  if (!graded) {
+    // One number for the whole face: the smallest curvature bound on a 9 × 9
+    // grid of cell centres and the smallest ray probe.
+    double maxK = 0;
+    for (int i = 0; i < 9; ++i)
+      for (int j = 0; j < 9; ++j) {
+        BRepLProp_SLProps props(surf, u0_ + (u1_ - u0_) * (i + 0.5) / 9, v0_ + (v1_ - v0_) * (j + 0.5) / 9, 2, 1e-9);
+        if (!props.IsCurvatureDefined()) continue;
+        maxK = std::max({maxK, std::abs(props.MaxCurvature()), std::abs(props.MinCurvature())});
+      }
+    double uniform = kCurvatureFraction * (maxK > 0 ? 1.0 / maxK : 1e300);
+    for (const Probe& p : thickness) uniform = std::min(uniform, p.spacing);
+    cells_.assign(kCells * kCells, std::clamp(uniform, floor, cap));
+    minimum_ = maximum_ = cells_.front();
+    return;
+  }
 
   // Nodes: the curvature bound, then graded: s_i = min over all sources j of
   // s_j + kGrading × |P_i - P_j| (less the reach of a thickness probe).
@@ -134,6 +151,7 @@ FaceSpacingField::FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeI
     for (const Probe& p : thickness)
       s = std::min(s, p.spacing + kGrading * std::max(0.0, nodePoints_[a].Distance(p.point) - p.reach));
   }
+
   // A cell with a probe inside never asks for more than the probe.
   probeMinimum_.assign(kCells * kCells, cap);
   for (const Probe& p : thickness) {

@@ -24,8 +24,12 @@ class FaceSpacingField {
   FaceSpacingField() = default;
   // Probes `face` (curvature on a node grid, wall thickness by rays cast
   // inward through `solidRays`), clamps every value to [floor, cap] and grades
-  // it. `cap` is the global target spacing h.
-  FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeIntersector& solidRays, double floor, double cap);
+  // it. `cap` is the global target spacing h. Not `graded`: one value for the
+  // whole face, the smallest curvature bound on a 9 × 9 grid and the smallest
+  // ray probe (the rule before the field; still the default, see
+  // SamplingParams::gradedSpacing).
+  FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeIntersector& solidRays, double floor, double cap,
+                   bool graded);
 
   // The spacing of the grid cell holding (u, v): the smallest value on its
   // corners and probes, so the cell never asks for less than a point in it.

@@ -91,6 +91,7 @@ SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& param
   SamplingContext ctx(topo, edgeFeatures, vertexFeatures);
   ctx.spacing = params.spacing > 0 ? params.spacing : defaultSpacing(solid);
   ctx.minSpacing = ctx.spacing * params.minSpacingFraction;
+  ctx.gradedSpacing = params.gradedSpacing;
   set.spacing = ctx.spacing;
   set.faceCount = topo.faceCount();
   const Bnd_Box box = boundingBox(solid);

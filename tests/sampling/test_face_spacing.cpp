@@ -8,6 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <vector>
 
@@ -26,6 +29,8 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <gp_Vec.hxx>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
 
 #include "cadmedial/sampling.hpp"
 #include "face_spacing_field.hpp"
@@ -76,6 +81,7 @@ TEST(FaceSpacing, PointedConeIsGradedFromApexToBase) {
   const TopoDS_Shape cone = BRepPrimAPI_MakeCone(5.0, 0.0, 50.0).Shape();
   SamplingParams params;
   params.spacing = 1.3;
+  params.gradedSpacing = true;
   const SolidSampling sampled = sampleSolid(cone, params);
   const SampleSet& s = sampled.samples;
   const Dt dt = triangulate(s);
@@ -124,7 +130,7 @@ TEST(FaceSpacing, EvenWallKeepsItsSpacingBetweenProbes) {
       const double z = props.CentreOfMass().Z();
       if (std::abs(z) > 1e-9 && std::abs(z - thickness) > 1e-9) continue;  // a side
       ++bigFaces;
-      const FaceSpacingField field(face, rays, h / 16, h);
+      const FaceSpacingField field(face, rays, h / 16, h, /*graded=*/true);
       double u0, u1, v0, v1;
       BRepTools::UVBounds(face, u0, u1, v0, v1);
       double largest = 0;
@@ -151,6 +157,7 @@ TEST(FaceSpacing, StepPlateIsFineOnlyUnderTheThinPart) {
       BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(profile.Wire()).Face(), gp_Vec(0, 40, 0)).Shape();
   SamplingParams params;
   params.spacing = 3.0;
+  params.gradedSpacing = true;
   const SolidSampling sampled = sampleSolid(bar, params);
   const SampleSet& s = sampled.samples;
   const Dt dt = triangulate(s);
@@ -168,6 +175,34 @@ TEST(FaceSpacing, StepPlateIsFineOnlyUnderTheThinPart) {
               s.size(), widestUnderFlange, kHoleRadii * kPoissonFraction * 0.4 * 1.5, underThick, underFlange);
   EXPECT_LE(widestUnderFlange, kHoleRadii * kPoissonFraction * 0.4 * 1.5);
   EXPECT_GT(underThick, 2 * underFlange);
+}
+
+// `cadmedial sample --graded-spacing` reaches the sampler and is recorded;
+// without it a face keeps one spacing (the default while the pair-mesh repair
+// depends on the exact samples), which on the cone is the apex's: ~10 x more.
+TEST(FaceSpacing, CliFlagSwitchesGrading) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cadmedial_test_graded_spacing";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string model = (dir / "cone.brep").string();
+  ASSERT_TRUE(BRepTools::Write(BRepPrimAPI_MakeCone(5.0, 0.0, 50.0).Shape(), model.c_str()));
+  auto sample = [&](const std::string& flag) {
+    const std::filesystem::path out = dir / ("out" + flag);
+    const std::string cmd = std::string(CADMEDIAL_CLI) + " sample '" + model + "' " + flag + " -o '" + out.string() +
+                            "' >/dev/null 2>&1";
+    const int status = std::system(cmd.c_str());
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << cmd;
+    std::ifstream in(out / "solid_0" / "sampling.json");
+    const nlohmann::json summary = nlohmann::json::parse(in);
+    return summary;
+  };
+  const nlohmann::json graded = sample("--graded-spacing"), uniform = sample("");
+  const double gradedSamples = graded["samples"]["total"], uniformSamples = uniform["samples"]["total"];
+  std::printf("cone via the CLI: %g samples graded, %g with one spacing per face\n", gradedSamples, uniformSamples);
+  EXPECT_TRUE(graded["graded_spacing"].get<bool>());
+  EXPECT_FALSE(uniform["graded_spacing"].get<bool>());
+  EXPECT_LT(4 * gradedSamples, uniformSamples);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
