@@ -1,6 +1,7 @@
 // Face interiors: Poisson-disk samples by dart throwing on the surface (area
 // uniform), never a grid, kept clear of edge, corner and triplet samples. The
-// Poisson radius follows the face's graded spacing field tile by tile.
+// Poisson radius follows the face's spacing field tile by tile (one value for
+// the whole face unless the spacing is graded).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

@@ -24,7 +24,7 @@ struct SamplingContext {
   double spacing = 0;     // global target spacing h
   double minSpacing = 0;  // floor for curvature refinement
   bool gradedSpacing = false;  // SamplingParams::gradedSpacing
-  std::vector<FaceSpacingField> faceSpacing;  // per face: graded over its UV box
+  std::vector<FaceSpacingField> faceSpacing;  // per face: one value, or graded over its UV box
   std::vector<double> edgeSpacing;   // per edge (target)
   std::vector<double> cornerRadius;  // per vertex: corner-ball radius (0: no ball)
   std::vector<Index> vertexSample;   // per vertex: its sample
@@ -38,8 +38,8 @@ struct SamplingContext {
   }
 };
 
-// Face spacing fields from curvature and wall thickness, edge spacing from
-// curvature and the incident faces' fields along the edge,
+// Face spacing fields from curvature and wall thickness (graded or not), edge
+// spacing from curvature and the incident faces' fields along the edge,
 // corner-ball radii from incident edge lengths.
 void computeSpacings(SamplingContext& ctx);
 // One sample per vertex, then every non-degenerate edge sampled by arc length
