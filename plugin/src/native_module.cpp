@@ -213,7 +213,7 @@ InsideOracle makeOracle(BRepClass3d_SolidClassifier& classifier) {
 }
 
 py::list compute(const std::string& source, double spacing, double theta, double rho, bool checkInside,
-                 py::object progressCallback, bool pairMesh) {
+                 py::object progressCallback, bool pairMesh, bool gradedSpacing) {
   if (!(spacing >= 0)) throw py::value_error("spacing must be >= 0 (0 = automatic), got " + std::to_string(spacing));
   if (!(theta >= 0 && theta < 90)) throw py::value_error("theta must be in [0, 90) degrees, got " + std::to_string(theta));
   if (!(rho > 0)) throw py::value_error("rho must be > 0, got " + std::to_string(rho));
@@ -236,6 +236,7 @@ py::list compute(const std::string& source, double spacing, double theta, double
       progress.report("sample", i, n);
       SamplingParams sp;
       sp.spacing = spacing;
+      sp.gradedSpacing = gradedSpacing;
       // The triangulation is built while the faces are reconstructed; the
       // pair-mesh lives on it too.
       const auto solidStart = Clock::now();
@@ -264,6 +265,7 @@ py::list compute(const std::string& source, double spacing, double theta, double
     summary["model"] = input.name;
     summary["solid"] = i;
     summary["spacing"] = s.samples.spacing;
+    summary["graded_spacing"] = gradedSpacing;
     summary["seconds"]["read"] = runs[i].secondsRead;
     const double seconds = runs[i].secondsAxis;
     summary["seconds"]["total"] = seconds;
@@ -295,7 +297,7 @@ py::list compute(const std::string& source, double spacing, double theta, double
   return out;
 }
 
-py::list sample(const std::string& source, double spacing, py::object progressCallback) {
+py::list sample(const std::string& source, double spacing, py::object progressCallback, bool gradedSpacing) {
   if (!(spacing >= 0)) throw py::value_error("spacing must be >= 0 (0 = automatic), got " + std::to_string(spacing));
   Progress progress(std::move(progressCallback));
   Input input;
@@ -309,6 +311,7 @@ py::list sample(const std::string& source, double spacing, py::object progressCa
       progress.report("sample", i, n);
       SamplingParams sp;
       sp.spacing = spacing;
+      sp.gradedSpacing = gradedSpacing;
       runs[i] = sampleSolid(input.solids[i], sp);
     }
     progress.report("done", n, n);
@@ -334,7 +337,9 @@ py::list sample(const std::string& source, double spacing, py::object progressCa
     std::vector<std::string> warnings = input.warnings;
     warnings.insert(warnings.end(), runs[i].report.warnings.begin(), runs[i].report.warnings.end());
     d["warnings"] = toList(warnings);
-    d["report"] = jsonToPython(toJson(runs[i].report));
+    nlohmann::json report = toJson(runs[i].report);
+    report["graded_spacing"] = gradedSpacing;
+    d["report"] = jsonToPython(report);
     out.append(d);
   }
   return out;
@@ -571,7 +576,7 @@ PYBIND11_MODULE(_native, m) {
 
   m.def("compute", &compute, py::arg("source"), py::arg("spacing") = 0.0, py::arg("theta") = 5.0,
         py::arg("rho") = 8.0, py::arg("check_inside") = true, py::arg("progress") = py::none(),
-        py::arg("pair_mesh") = false,
+        py::arg("pair_mesh") = false, py::arg("graded_spacing") = false,
         R"(Inner medial axis of every closed solid in `source` (BREP text or a file name).
 
 Returns a list with one dict per solid: vertices (N x 3), radius (N),
@@ -588,8 +593,11 @@ triangulation, with exact inner labels (stage "pair_mesh"); each dict then has
 pair_mesh: nodes (N x 3), node_is_boundary (N), tets (M x 4), types (M; 0
 face-vertex, 1 edge-edge, 2 vertex-face), on_sheets (M), boundary_triangles
 (K x 3) and report (counts, validity, exact volume, repair, seconds).
+graded_spacing: grade the sample spacing within each face (as
+`cadmedial run --graded-spacing`; off by default, see ARCHITECTURE.md).
 Raises InputError (a ValueError) for unreadable input or no closed solid.)");
   m.def("sample", &sample, py::arg("source"), py::arg("spacing") = 0.0, py::arg("progress") = py::none(),
+        py::arg("graded_spacing") = false,
         R"(Boundary samples of every closed solid in `source`: points (N x 3), kind (0 face,
 1 edge, 2 vertex), owner, on_convex_edge, nonconcave_corner, triplets (T x 3:
 s, s_left, s_right), triangles (M x 3, the stitched reconstruction),
