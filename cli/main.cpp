@@ -24,10 +24,11 @@ int main(int argc, char** argv) {
   sampleCmd->add_option("-o,--output", sample.outDir, "Output directory")->required();
   sampleCmd->add_option("--spacing", sample.spacing, "Target sample spacing h in model units (default: diagonal/40)")
       ->check(CLI::PositiveNumber);
-  sampleCmd->add_flag("--graded-spacing", sample.gradedSpacing,
-                      "Grade the sample spacing within each face (fine only where curvature or a thin wall needs it, e.g. at a "
-                  "cone's apex) instead of one minimum per face; off by default while the pair-mesh repair is "
-                  "sensitive to it (ARCHITECTURE.md)");
+  const char* gradedSpacingHelp =
+      "Grade the sample spacing within each face (fine only where curvature or a thin wall needs it, e.g. at a "
+      "cone's apex) instead of one minimum per face; off by default while the pair-mesh repair is sensitive to it "
+      "(ARCHITECTURE.md)";
+  sampleCmd->add_flag("--graded-spacing", sample.gradedSpacing, gradedSpacingHelp);
 
   RunCommandOptions run;
   CLI::App* runCmd = app.add_subcommand(
@@ -38,9 +39,7 @@ int main(int argc, char** argv) {
   runCmd->add_option("-o,--output", run.outDir, "Output directory")->required();
   runCmd->add_option("--spacing", run.spacing, "Target sample spacing h in model units (default: diagonal/40)")
       ->check(CLI::PositiveNumber);
-  runCmd->add_flag("--graded-spacing", run.gradedSpacing, "Grade the sample spacing within each face (fine only where curvature or a thin wall needs it, e.g. at a "
-                  "cone's apex) instead of one minimum per face; off by default while the pair-mesh repair is "
-                  "sensitive to it (ARCHITECTURE.md)");
+  runCmd->add_flag("--graded-spacing", run.gradedSpacing, gradedSpacingHelp);
   runCmd->add_option("--theta", run.params.thetaDeg,
                      "Angle condition threshold in degrees (default 5; 22.5 = pi/8 for point clouds and meshes)")
       ->check(CLI::Range(0.0, 89.0));

@@ -403,6 +403,12 @@ def _check_params(spacing, theta, rho):
             raise ValueError(f"{name} must be a finite number, got {value!r}")
 
 
+def _check_flags(**flags):
+    for name, value in flags.items():
+        if not isinstance(value, (bool, np.bool_)):
+            raise ValueError(f"{name} must be True or False, got {value!r}")
+
+
 #: File name endings that `cadmedial run` and compute() treat as point clouds / meshes.
 POINT_EXTENSIONS = (".xyz", ".pts", ".ply", ".stl", ".obj", ".off")
 #: MEDIAL's Angle threshold for point clouds (pi/8, seed 000); CAD_MEDIAL uses 5 degrees.
@@ -494,9 +500,7 @@ def compute(source, spacing=0.0, theta=None, rho=8.0, pair_mesh=False, check_ins
     The GIL is released while C++ runs, so this can run in a worker thread.
     Raises InputError (a ValueError) for unreadable input or no closed solid.
     """
-    for name, value in (("pair_mesh", pair_mesh), ("graded_spacing", graded_spacing)):
-        if not isinstance(value, (bool, np.bool_)):
-            raise ValueError(f"{name} must be True or False, got {value!r}")
+    _check_flags(pair_mesh=pair_mesh, graded_spacing=graded_spacing)
     if not (hasattr(source, "exportBrepToString") or isinstance(source, bytes)) and point_source(source) is not None:
         if pair_mesh:
             raise ValueError(PAIR_MESH_MESSAGE)
@@ -551,8 +555,7 @@ def sample(source, spacing=0.0, progress=None, cancel=None, graded_spacing=False
     """Boundary samples of every closed solid of `source`; one SampleResult per solid.
     graded_spacing: as for compute()."""
     _check_params(spacing, 5.0, 8.0)
-    if not isinstance(graded_spacing, (bool, np.bool_)):
-        raise ValueError(f"graded_spacing must be True or False, got {graded_spacing!r}")
+    _check_flags(graded_spacing=graded_spacing)
     raw = _native.sample(to_source(source), float(spacing), _with_cancel(progress, cancel),
                          graded_spacing=bool(graded_spacing))
     return [SampleResult(d) for d in raw]

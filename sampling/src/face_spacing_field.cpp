@@ -134,41 +134,35 @@ FaceSpacingField::FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeI
   // Straight-line distance is at most the distance along the face, so this
   // errs towards smaller spacings. Sources are the nodes (as measured) and
   // the thickness probes.
+  constexpr int nodesPerSide = kCells + 1;
+  std::vector<gp_Pnt> points;
   std::vector<double> measured;
-  measured.reserve(kNodesPerSide * kNodesPerSide);
-  for (int j = 0; j < kNodesPerSide; ++j)
-    for (int i = 0; i < kNodesPerSide; ++i) {
+  for (int j = 0; j < nodesPerSide; ++j)
+    for (int i = 0; i < nodesPerSide; ++i) {
       const double u = u0_ + (u1_ - u0_) * i / kCells, v = v0_ + (v1_ - v0_) * j / kCells;
       const double k = curvatureAt(surf, u, v, (u1_ - u0_) / kCells, (v1_ - v0_) / kCells, u0_, u1_, v0_, v1_);
       measured.push_back(k > 0 ? std::clamp(kCurvatureFraction / k, floor, cap) : cap);
-      nodePoints_.push_back(surf.Value(u, v));
+      points.push_back(surf.Value(u, v));
     }
-  nodeSpacing_ = measured;
-  for (std::size_t a = 0; a < nodePoints_.size(); ++a) {
-    double& s = nodeSpacing_[a];
-    for (std::size_t b = 0; b < nodePoints_.size(); ++b)
-      s = std::min(s, measured[b] + kGrading * nodePoints_[a].Distance(nodePoints_[b]));
+  std::vector<double> node = measured;
+  for (std::size_t a = 0; a < points.size(); ++a) {
+    for (std::size_t b = 0; b < points.size(); ++b)
+      node[a] = std::min(node[a], measured[b] + kGrading * points[a].Distance(points[b]));
     for (const Probe& p : thickness)
-      s = std::min(s, p.spacing + kGrading * std::max(0.0, nodePoints_[a].Distance(p.point) - p.reach));
+      node[a] = std::min(node[a], p.spacing + kGrading * std::max(0.0, points[a].Distance(p.point) - p.reach));
   }
 
-  // A cell with a probe inside never asks for more than the probe.
-  probeMinimum_.assign(kCells * kCells, cap);
-  for (const Probe& p : thickness) {
-    double& cell = probeMinimum_[cellIndex(p.v, v0_, v1_) * kCells + cellIndex(p.u, u0_, u1_)];
-    cell = std::min(cell, p.spacing);
-  }
-  updateCells();
-}
-
-void FaceSpacingField::updateCells() {
-  cells_.assign(kCells * kCells, 0.0);
+  // A cell asks for the smallest value on its corners and on the probes inside it.
+  cells_.resize(kCells * kCells);
   for (int j = 0; j < kCells; ++j)
     for (int i = 0; i < kCells; ++i) {
-      const int n = j * kNodesPerSide + i;
-      cells_[j * kCells + i] = std::min({nodeSpacing_[n], nodeSpacing_[n + 1], nodeSpacing_[n + kNodesPerSide],
-                                         nodeSpacing_[n + kNodesPerSide + 1], probeMinimum_[j * kCells + i]});
+      const int n = j * nodesPerSide + i;
+      cells_[j * kCells + i] = std::min({node[n], node[n + 1], node[n + nodesPerSide], node[n + nodesPerSide + 1]});
     }
+  for (const Probe& p : thickness) {
+    double& cell = cells_[cellIndex(p.v, v0_, v1_) * kCells + cellIndex(p.u, u0_, u1_)];
+    cell = std::min(cell, p.spacing);
+  }
   minimum_ = *std::min_element(cells_.begin(), cells_.end());
   maximum_ = *std::max_element(cells_.begin(), cells_.end());
 }
@@ -186,12 +180,10 @@ int FaceSpacingField::lastCellIndex(double x, double low, double high) const {
 }
 
 double FaceSpacingField::at(double u, double v) const {
-  if (cells_.empty()) return maximum_;
   return cells_[cellIndex(v, v0_, v1_) * kCells + cellIndex(u, u0_, u1_)];
 }
 
 double FaceSpacingField::minOver(double uLow, double uHigh, double vLow, double vHigh) const {
-  if (cells_.empty()) return maximum_;
   double s = maximum_;
   // A box ending exactly on a cell boundary does not reach into the next cell.
   for (int j = cellIndex(vLow, v0_, v1_); j <= lastCellIndex(vHigh, v0_, v1_); ++j)

@@ -11,7 +11,6 @@
 
 #include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopoDS_Face.hxx>
-#include <gp_Pnt.hxx>
 
 namespace cadmedial {
 
@@ -21,7 +20,6 @@ class FaceSpacingField {
   static constexpr double kThicknessFraction = 0.4;   // spacing <= this × local wall thickness
   static constexpr double kGrading = 0.15;            // spacing grows by at most this × distance
 
-  FaceSpacingField() = default;
   // Probes `face` (curvature on a node grid, wall thickness by rays cast
   // inward through `solidRays`), clamps every value to [floor, cap] and grades
   // it. `cap` is the global target spacing h. Not `graded`: one value for the
@@ -32,7 +30,8 @@ class FaceSpacingField {
                    bool graded);
 
   // The spacing of the grid cell holding (u, v): the smallest value on its
-  // corners and probes, so the cell never asks for less than a point in it.
+  // corners and probes, so the cell never asks for more than a point in it
+  // needs.
   double at(double u, double v) const;
   // The smallest spacing over the cells that a UV box overlaps.
   double minOver(double uLow, double uHigh, double vLow, double vHigh) const;
@@ -43,15 +42,9 @@ class FaceSpacingField {
   int cellIndex(double x, double low, double high) const;      // cell holding x
   int lastCellIndex(double x, double low, double high) const;  // last cell a range ending at x reaches
 
-  void updateCells();
-
   static constexpr int kCells = 16;  // per UV side
-  static constexpr int kNodesPerSide = kCells + 1;
   double u0_ = 0, u1_ = 1, v0_ = 0, v1_ = 1;
-  std::vector<gp_Pnt> nodePoints_;     // kNodesPerSide², row-major in v: the grid corners on the surface
-  std::vector<double> nodeSpacing_;    // graded spacing at each node
-  std::vector<double> probeMinimum_;   // per cell: smallest thickness probe inside it
-  std::vector<double> cells_;          // kCells², row-major in v: min of corners and probes
+  std::vector<double> cells_;  // kCells², row-major in v: min of corners and probes
   double minimum_ = 0, maximum_ = 0;
 };
 

@@ -44,10 +44,21 @@ using Dt = CGAL::Delaunay_triangulation_3<K>;
 constexpr double kPoissonFraction = 0.75;  // Poisson radius = this × spacing (face_sampling.cpp)
 constexpr double kHoleRadii = 2.5;         // a maximal Poisson-disk set leaves holes of ~2 radii
 
-Dt triangulate(const SampleSet& s) {
+// The samples of `shape` at spacing h with grading on, and their Delaunay
+// triangulation for nearest-sample queries.
+struct GradedSamples {
+  SampleSet samples;
+  Dt dt;
+};
+GradedSamples sampleGraded(const TopoDS_Shape& shape, double h) {
+  SamplingParams params;
+  params.spacing = h;
+  params.gradedSpacing = true;
+  GradedSamples out{sampleSolid(shape, params).samples, {}};
   std::vector<K::Point_3> pts;
-  for (const auto& p : s.points) pts.emplace_back(p[0], p[1], p[2]);
-  return Dt(pts.begin(), pts.end());
+  for (const auto& p : out.samples.points) pts.emplace_back(p[0], p[1], p[2]);
+  out.dt = Dt(pts.begin(), pts.end());
+  return out;
 }
 
 double nearestSample(const Dt& dt, double x, double y, double z) {
@@ -79,19 +90,17 @@ double medianNeighbourDistance(const Dt& dt, const std::function<bool(const Vec3
 // spacing per face made the whole face as fine as the apex (115 k samples).
 TEST(FaceSpacing, PointedConeIsGradedFromApexToBase) {
   const TopoDS_Shape cone = BRepPrimAPI_MakeCone(5.0, 0.0, 50.0).Shape();
-  SamplingParams params;
-  params.spacing = 1.3;
-  params.gradedSpacing = true;
-  const SolidSampling sampled = sampleSolid(cone, params);
-  const SampleSet& s = sampled.samples;
-  const Dt dt = triangulate(s);
+  const double h = 1.3;
+  const GradedSamples graded = sampleGraded(cone, h);
+  const SampleSet& s = graded.samples;
+  const Dt& dt = graded.dt;
   const double slope = 5.0 / 50.0, cosAlpha = 1.0 / std::sqrt(1 + slope * slope);
 
   // No hole wider than the exact requirement allows, on circles up the cone.
   double worst = 0;  // hole / allowed
   for (double z = 0.5; z <= 49.5; z += 0.5) {
     const double rho = 5.0 * (1 - z / 50.0);
-    const double required = std::clamp(0.15 * rho / cosAlpha, params.spacing / 16, params.spacing);
+    const double required = std::clamp(0.15 * rho / cosAlpha, h / 16, h);
     for (int k = 0; k < 64; ++k) {
       const double a = 2 * M_PI * k / 64;
       const double hole = nearestSample(dt, rho * std::cos(a), rho * std::sin(a), z);
@@ -155,12 +164,9 @@ TEST(FaceSpacing, StepPlateIsFineOnlyUnderTheThinPart) {
   profile.Close();
   const TopoDS_Shape bar =
       BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(profile.Wire()).Face(), gp_Vec(0, 40, 0)).Shape();
-  SamplingParams params;
-  params.spacing = 3.0;
-  params.gradedSpacing = true;
-  const SolidSampling sampled = sampleSolid(bar, params);
-  const SampleSet& s = sampled.samples;
-  const Dt dt = triangulate(s);
+  const GradedSamples graded = sampleGraded(bar, 3.0);
+  const SampleSet& s = graded.samples;
+  const Dt& dt = graded.dt;
 
   double widestUnderFlange = 0;
   for (double x = 81; x <= 99; x += 0.25)
