@@ -267,8 +267,10 @@ class BatchRunner {
         r.message = "exited 0 but wrote no solid_<i>/summary.json";
       }
     }
-    publishOrDiscard(job, r);
     r.wallSeconds = std::chrono::duration<double>(Clock::now() - job.start).count();
+    publishOrDiscard(job, r);
+    // Nothing but the append between the rename and the record: a SIGKILL of
+    // the batch there leaves one complete, unrecorded folder, which --resume redoes.
     log_.append(toJson(r));
     progress_.fileDone(r);
     std::error_code ignored;
@@ -278,6 +280,8 @@ class BatchRunner {
   // Outputs under OUTDIR/<output>/ exist exactly when the file's last record
   // is ok: complete new outputs replace old ones by rename, and a failure
   // removes outputs of an earlier run rather than leave them to look current.
+  // The one exception is a batch killed by SIGKILL between this rename and
+  // the record's append (see finish); --resume redoes that file.
   void publishOrDiscard(const Job& job, FileResult& r) {
     const fs::path target = outDir_ / r.output;
     std::error_code ec;

@@ -100,8 +100,12 @@ class BatchTestCase(unittest.TestCase):
     def batch(self, args, **kw):
         return subprocess.run([CADMEDIAL, "batch"] + args, capture_output=True, text=True, **kw)
 
-    def assert_outputs_match_records(self, out_dir):
-        """Outputs exist exactly for files whose last record is ok, and are complete."""
+    def assert_outputs_match_records(self, out_dir, unrecorded_allowed=0):
+        """Outputs exist exactly for files whose last record is ok, and are complete.
+
+        A batch killed by SIGKILL between publishing a file's outputs and
+        appending its record leaves that one folder unrecorded (complete all
+        the same): `unrecorded_allowed` says how many such folders may exist."""
         last = {r["output"]: r for r in read_records(out_dir)}
         for output, r in last.items():
             folder = os.path.join(out_dir, output)
@@ -116,12 +120,18 @@ class BatchTestCase(unittest.TestCase):
                 with open(os.path.join(d, "summary.json"), encoding="utf-8") as f:
                     self.assertEqual(json.load(f)["counts"], s["counts"])
         # Every output folder belongs to an ok record (no half-written leftovers).
+        unrecorded = set()
         for root, dirs, files in os.walk(out_dir):
             dirs[:] = [d for d in dirs if not d.startswith(".")]
             if "summary.json" in files:
                 output = os.path.relpath(os.path.dirname(root), out_dir)
-                self.assertIn(output, last, "outputs without a record: " + root)
+                if output not in last:
+                    unrecorded.add(output)
+                    for name in SOLID_FILES:
+                        self.assertTrue(os.path.isfile(os.path.join(root, name)), "half-written: " + root)
+                    continue
                 self.assertEqual(last[output]["status"], "ok", root)
+        self.assertLessEqual(len(unrecorded), unrecorded_allowed, "outputs without a record: %s" % sorted(unrecorded))
         self.assertFalse([n for n in os.listdir(out_dir) if n.endswith(".tmp")])
 
 
