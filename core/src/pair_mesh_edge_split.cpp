@@ -151,21 +151,60 @@ class EdgeSplitter {
     return o;
   }
 
-  // Best triangulation of an outline coned to apex, and its score.
-  Score bestTriangulation(const std::vector<Index>& o, Index apex, std::vector<std::array<Index, 3>>* out) const {
+  using TriangleKey = std::array<Index, 3>;  // sorted node ids
+  static TriangleKey sortedKey(Index a, Index b, Index c) {
+    TriangleKey k{a, b, c};
+    std::sort(k.begin(), k.end());
+    return k;
+  }
+
+  // Best triangulation of an outline coned to apex, and its score, without
+  // the triangles in `forbidden` (see earsOfPartners).
+  Score bestTriangulation(const BoundaryPolygon& p, const std::vector<Index>& o,
+                          std::vector<std::array<Index, 3>>* out, const std::vector<TriangleKey>& forbidden) const {
     Score best{~std::size_t{0}, 0};
+    std::vector<std::array<Index, 3>> chosen;
     for (const Triangulation& tr : triangulationsOf(static_cast<int>(o.size()))) {
+      const bool allowed = std::none_of(tr.begin(), tr.end(), [&](const std::array<int, 3>& t) {
+        const TriangleKey k = sortedKey(o[t[0]], o[t[1]], o[t[2]]);
+        return std::find(forbidden.begin(), forbidden.end(), k) != forbidden.end();
+      });
+      if (!allowed) continue;
       Score s;
-      for (const auto& t : tr) addToScore(s, m_.nodes, {apex, o[t[0]], o[t[1]], o[t[2]]});
+      for (const auto& t : tr) addToScore(s, m_.nodes, {p.apex, o[t[0]], o[t[1]], o[t[2]]});
       if (s < best) {
         best = s;
-        if (out) {
-          out->clear();
-          for (const auto& t : tr) out->push_back({o[t[0]], o[t[1]], o[t[2]]});
-        }
+        chosen.clear();
+        for (const auto& t : tr) chosen.push_back({o[t[0]], o[t[1]], o[t[2]]});
       }
     }
+    if (out) *out = std::move(chosen);
     return best;
+  }
+
+  // A polygon may keep a split edge's own three nodes (corner, split node,
+  // corner) as one thin triangle, the split undone on its side. If the
+  // polygon across that edge did the same, the boundary would hold one
+  // triangle twice, back to back (a fin of no volume, on which neither
+  // Vertex-Face element is the triangle's only one). So a polygon may not
+  // use such a triangle where the polygon across the edge already does.
+  std::vector<TriangleKey> earsOfPartners(const BoundaryPolygon& p) const {
+    std::vector<TriangleKey> ears;
+    const std::size_t self = static_cast<std::size_t>(&p - polygons_.data());
+    for (int k = 0; k < 3; ++k) {
+      if (p.splits[k] == kNoIndex) continue;
+      const TriangleKey ear = sortedKey(p.corners[k], p.splits[k], p.corners[(k + 1) % 3]);
+      const auto it = polygonsOfEdge_.find(key(p.corners[k], p.corners[(k + 1) % 3]));
+      if (it == polygonsOfEdge_.end()) continue;
+      for (std::size_t q : it->second)
+        if (q != self && hasTriangle(polygons_[q].triangles, ear)) ears.push_back(ear);
+    }
+    return ears;
+  }
+
+  static bool hasTriangle(const std::vector<std::array<Index, 3>>& triangles, const TriangleKey& k) {
+    return std::any_of(triangles.begin(), triangles.end(),
+                       [&](const std::array<Index, 3>& t) { return sortedKey(t[0], t[1], t[2]) == k; });
   }
 
   int edgeIndex(const BoundaryPolygon& p, Index a, Index b) const {
@@ -253,8 +292,12 @@ class EdgeSplitter {
         addToScore(s, m_.nodes, {t[0], m, t[2], t[3]});
         addToScore(s, m_.nodes, {m, t[1], t[2], t[3]});
       }
-      const Score s0 = bestTriangulation(outline(p0, k0, m), p0.apex, nullptr);
-      const Score s1 = bestTriangulation(outline(p1, k1, m), p1.apex, nullptr);
+      std::vector<std::array<Index, 3>> tri0;
+      const Score s0 = bestTriangulation(p0, outline(p0, k0, m), &tri0, earsOfPartners(p0));
+      std::vector<TriangleKey> forbidden1 = earsOfPartners(p1);
+      if (hasTriangle(tri0, sortedKey(a, m, b)))
+        forbidden1.push_back(sortedKey(a, m, b));
+      const Score s1 = bestTriangulation(p1, outline(p1, k1, m), nullptr, forbidden1);
       s.negative += s0.negative + s1.negative;
       s.deficit += s0.deficit + s1.deficit;
       if (s.negative < best.negative || (found && s < best)) {
@@ -288,7 +331,7 @@ class EdgeSplitter {
       const std::array<Index, 2> medial = m_.medialSimplex[first];
       const std::uint8_t linked = m_.onSheets[first];
       for (std::size_t e : p->elements) removed_.push_back(e);
-      bestTriangulation(outline(*p), p->apex, &p->triangles);
+      bestTriangulation(*p, outline(*p), &p->triangles, earsOfPartners(*p));
       p->elements.clear();
       for (const auto& t : p->triangles) {
         p->elements.push_back(m_.tets.size());
