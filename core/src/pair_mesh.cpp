@@ -31,6 +31,14 @@ void keepRepairedPositions(const PairMesh& repaired, PairMesh& rebuilt) {
   }
 }
 
+// Total volume of the inverted elements (positive).
+double invertedVolume(const PairMesh& m) {
+  double volume = 0;
+  for (std::size_t i = 0; i < m.size(); ++i)
+    if (isInverted(m, i)) volume -= tetVolume(m, i);
+  return volume;
+}
+
 }  // namespace
 
 const char* pairElementTypeName(PairElementType t) {
@@ -55,57 +63,87 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
   watch.restart();
   if (repair) {
     std::size_t inverted = repairFlippedElements(mesh, dv);
-    // Last resort, up to three passes: the boundary cells whose Voronoi
+    // Last resort, up to ten passes: the boundary cells whose Voronoi
     // nodes the repair could not place go outer or, failing that, the outer
-    // cells across the inverted elements' boundary facets go inner. Only the
-    // elements around the cells are rebuilt (the whole mesh where a split
-    // edge cannot be undone; either way its time counts as repair), and the
-    // mesh is repaired again (without the h/200 weld: the nodes are where the
-    // first repair left them). A trial is kept only when fewer elements stay
-    // inverted and no more need repair (flat ones included), and while the
-    // cells relabelled hold at most 1e-3 of the enclosed volume in all.
+    // cells across the inverted elements' boundary facets go inner; first
+    // for all inverted elements at once, then element by element (the
+    // cells going outer with up to three rings of boundary cells around
+    // them: a fold in a wedge thinner than the sampling, the lever's blade
+    // between a plane and a cylinder touching it, can need a patch of the
+    // wedge to go, not one cell). Only the elements around the cells are
+    // rebuilt (the whole mesh where a split edge cannot be undone; either
+    // way its time counts as repair), and the mesh is repaired again
+    // (without the h/200 weld: the nodes are where the first repair left
+    // them). A trial is kept when no more elements need repair (flat ones
+    // included) and fewer stay inverted, or as many with less than half the
+    // inverted volume; while the cells relabelled hold at most 1e-3 of the
+    // enclosed volume in all, and for 32 trials at most (each copies and
+    // repairs the whole mesh; the public models at 9 spacings each needed
+    // 43 at most, on a CTC-01 that still ended with one inverted).
     const double budget = inverted > 0 ? 1e-3 * std::abs(boundaryEnclosedVolume(mesh)) : 0;
     double changed = 0;
     std::size_t needingRepair = inverted > 0 ? countElementsNeedingRepair(mesh.nodes, mesh.tets) : 0;
-    for (int pass = 0; pass < 3 && inverted > 0; ++pass) {
-      bool kept = false;
-      for (const bool goingInner : {false, true}) {
-        const std::vector<Index> cells = goingInner ? outerCellsAcrossInvertedElements(dv, inner, mesh)
-                                                    : boundaryCellsOfInvertedElements(dv, inner, mesh);
-        if (cells.empty()) continue;
-        double volume = 0;
-        for (Index c : cells) volume += std::abs(dv.triangulation().tetrahedron(dv.cell(c)).volume());
-        if (changed + volume > budget) continue;
-        std::vector<std::uint8_t> trialInner = inner;
-        for (Index c : cells) trialInner[c] = goingInner ? 1 : 0;
-        PairMesh trial = mesh;
-        if (!builder.relabel(trial, trialInner, cells)) {
-          trial = builder.build(trialInner);
-          keepRepairedPositions(mesh, trial);
+    double invertedVolumeNow = inverted > 0 ? invertedVolume(mesh) : 0;
+    // One trial: the cells change side, the mesh is rebuilt around them and
+    // repaired; kept (true) when it is better.
+    int trials = 0;
+    auto tryRelabelling = [&](const std::vector<Index>& cells, bool goingInner) {
+      if (cells.empty() || trials >= 32) return false;
+      ++trials;
+      double volume = 0;
+      for (Index c : cells) volume += std::abs(dv.triangulation().tetrahedron(dv.cell(c)).volume());
+      if (changed + volume > budget) return false;
+      std::vector<std::uint8_t> trialInner = inner;
+      for (Index c : cells) trialInner[c] = goingInner ? 1 : 0;
+      PairMesh trial = mesh;
+      if (!builder.relabel(trial, trialInner, cells)) {
+        trial = builder.build(trialInner);
+        keepRepairedPositions(mesh, trial);
+      }
+      trial.counts.movedNodes = trial.counts.retriangulatedPolygons = 0;
+      const std::size_t trialInverted = repairFlippedElements(trial, dv, 12, /*weldCloseNodes=*/false);
+      const std::size_t trialNeedingRepair = countElementsNeedingRepair(trial.nodes, trial.tets);
+      // Fewer inverted, or as many with less volume inverted (a fold pushed
+      // to a smaller cell, which the next pass may remove): the pair (count,
+      // volume) only decreases, so the passes cannot cycle.
+      const double trialInvertedVolume = invertedVolume(trial);
+      if (trialNeedingRepair > needingRepair || trialInverted > inverted ||
+          (trialInverted == inverted && !(trialInvertedVolume < 0.5 * invertedVolumeNow)))
+        return false;
+      // Counts of the kept mesh, except those of the whole history:
+      // inverted before any repair, relabelled cells, and node moves and
+      // polygon re-triangulations summed over the passes kept (split
+      // edges: those the kept mesh has).
+      PairMeshCounts& c = trial.counts;
+      c.invertedBeforeRepair = mesh.counts.invertedBeforeRepair;
+      c.relabelledFlatCells = relabelled;
+      c.relabelledBoundaryCells = mesh.counts.relabelledBoundaryCells + cells.size();
+      c.splitEdges = splitNodeCount(trial);
+      c.movedNodes += mesh.counts.movedNodes;
+      c.retriangulatedPolygons += mesh.counts.retriangulatedPolygons;
+      trial.seconds = mesh.seconds;
+      mesh = std::move(trial);
+      inner = std::move(trialInner);
+      inverted = trialInverted;
+      invertedVolumeNow = trialInvertedVolume;
+      needingRepair = trialNeedingRepair;
+      changed += volume;
+      return true;
+    };
+    for (int pass = 0; pass < 10 && inverted > 0; ++pass) {
+      // All inverted elements at once first (one rebuild and repair); when
+      // that helps neither way, element by element (a change that mends one
+      // element can fold another, and together they cancel out).
+      bool kept = tryRelabelling(boundaryCellsOfInvertedElements(dv, inner, mesh), false) ||
+                  tryRelabelling(outerCellsAcrossInvertedElements(dv, inner, mesh), true);
+      if (!kept) {
+        const std::vector<std::size_t> elements = invertedElements(mesh);
+        for (std::size_t k = 0; k < elements.size() && k < 16 && !kept; ++k) {
+          const std::vector<std::size_t> one{elements[k]};
+          for (int rings = 0; rings < 4 && !kept; ++rings)
+            kept = tryRelabelling(boundaryCellsOfElements(dv, inner, mesh, one, rings), false);
+          kept = kept || tryRelabelling(outerCellsAcrossElements(dv, inner, mesh, one), true);
         }
-        trial.counts.movedNodes = trial.counts.retriangulatedPolygons = 0;
-        const std::size_t trialInverted = repairFlippedElements(trial, dv, 12, /*weldCloseNodes=*/false);
-        const std::size_t trialNeedingRepair = countElementsNeedingRepair(trial.nodes, trial.tets);
-        if (trialInverted >= inverted || trialNeedingRepair > needingRepair) continue;
-        // Counts of the kept mesh, except those of the whole history:
-        // inverted before any repair, relabelled cells, and node moves and
-        // polygon re-triangulations summed over the passes kept (split
-        // edges: those the kept mesh has).
-        PairMeshCounts& c = trial.counts;
-        c.invertedBeforeRepair = mesh.counts.invertedBeforeRepair;
-        c.relabelledFlatCells = relabelled;
-        c.relabelledBoundaryCells = mesh.counts.relabelledBoundaryCells + cells.size();
-        c.splitEdges = splitNodeCount(trial);
-        c.movedNodes += mesh.counts.movedNodes;
-        c.retriangulatedPolygons += mesh.counts.retriangulatedPolygons;
-        trial.seconds = mesh.seconds;
-        mesh = std::move(trial);
-        inner = std::move(trialInner);
-        inverted = trialInverted;
-        needingRepair = trialNeedingRepair;
-        changed += volume;
-        kept = true;
-        break;
       }
       if (!kept) break;
     }

@@ -144,20 +144,49 @@ std::vector<Index> growKeepingEdgesManifold(const DelaunayVoronoi& dv, const std
 
 }  // namespace
 
+std::vector<std::size_t> invertedElements(const PairMesh& mesh) {
+  std::vector<std::size_t> elements;
+  for (std::size_t i = 0; i < mesh.size(); ++i)
+    if (isInverted(mesh, i)) elements.push_back(i);
+  return elements;
+}
+
 std::vector<Index> boundaryCellsOfInvertedElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
                                                    const PairMesh& mesh) {
+  return boundaryCellsOfElements(dv, inner, mesh, invertedElements(mesh));
+}
+
+std::vector<Index> boundaryCellsOfElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
+                                           const PairMesh& mesh, const std::vector<std::size_t>& elements,
+                                           int rings) {
   std::vector<Index> cells;
-  for (std::size_t i = 0; i < mesh.size(); ++i) {
-    if (!isInverted(mesh, i)) continue;
+  for (const std::size_t i : elements) {
     for (Index n : mesh.tets[i])
       if (!mesh.isBoundaryNode(n) && mesh.nodeCell[n] != kNoIndex && onBoundary(dv, inner, mesh.nodeCell[n]))
         cells.push_back(mesh.nodeCell[n]);
+  }
+  for (int ring = 0; ring < rings; ++ring) {
+    const std::size_t size = cells.size();
+    for (std::size_t k = 0; k < size; ++k) {
+      const auto c = dv.cell(cells[k]);
+      for (int f = 0; f < 4; ++f) {
+        const Index n = DelaunayVoronoi::cellId(c->neighbor(f));
+        if (isInner(dv, inner, n) && onBoundary(dv, inner, n) &&
+            std::find(cells.begin(), cells.end(), n) == cells.end())
+          cells.push_back(n);
+      }
+    }
   }
   return growKeepingEdgesManifold(dv, inner, std::move(cells), /*goingInner=*/false);
 }
 
 std::vector<Index> outerCellsAcrossInvertedElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
                                                     const PairMesh& mesh) {
+  return outerCellsAcrossElements(dv, inner, mesh, invertedElements(mesh));
+}
+
+std::vector<Index> outerCellsAcrossElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
+                                            const PairMesh& mesh, const std::vector<std::size_t>& elements) {
   const auto& dt = dv.triangulation();
   std::vector<Index> cells;
   // The outer neighbours of inner cell `id` across its facets that hold all
@@ -172,8 +201,7 @@ std::vector<Index> outerCellsAcrossInvertedElements(const DelaunayVoronoi& dv, c
       if (holds) cells.push_back(n);
     }
   };
-  for (std::size_t i = 0; i < mesh.size(); ++i) {
-    if (!isInverted(mesh, i)) continue;
+  for (const std::size_t i : elements) {
     const auto& t = mesh.tets[i];
     if (mesh.type[i] == PairElementType::VertexFace) {
       std::vector<Index> samples;

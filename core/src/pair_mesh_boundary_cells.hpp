@@ -22,6 +22,14 @@ namespace cadmedial {
 // Vertices are not checked. Sorted, each cell once.
 std::vector<Index> boundaryCellsOfInvertedElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
                                                    const PairMesh& mesh);
+// The same around the given elements only (indices into mesh.tets), with
+// `rings` layers of the boundary cells next to them (across a facet) added
+// before the growth: a fold in a wedge thinner than the sampling (the
+// lever's blade between a plane and a cylinder touching it) can need a patch
+// of the wedge's cells to go, not one.
+std::vector<Index> boundaryCellsOfElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
+                                           const PairMesh& mesh, const std::vector<std::size_t>& elements,
+                                           int rings = 0);
 
 // The other way round: finite outer cells next to inverted elements, for the
 // caller to relabel inner (the boundary then runs over their other
@@ -37,5 +45,11 @@ std::vector<Index> boundaryCellsOfInvertedElements(const DelaunayVoronoi& dv, co
 // are not checked. Sorted, each cell once.
 std::vector<Index> outerCellsAcrossInvertedElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
                                                     const PairMesh& mesh);
+// The same around the given elements only (indices into mesh.tets).
+std::vector<Index> outerCellsAcrossElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
+                                            const PairMesh& mesh, const std::vector<std::size_t>& elements);
+
+// Indices of the inverted elements of `mesh`, in order.
+std::vector<std::size_t> invertedElements(const PairMesh& mesh);
 
 }  // namespace cadmedial

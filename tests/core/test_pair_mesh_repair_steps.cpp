@@ -19,6 +19,7 @@
 #include "pair_mesh_boundary_cells.hpp"
 #include "pair_mesh_builder.hpp"
 #include "pair_mesh_facet_triangulation.hpp"
+#include "pair_mesh_element_checks.hpp"
 
 using namespace cadmedial;
 using cadmedial::testing::gridBoxSamples;
@@ -238,7 +239,12 @@ TEST(PairMeshRepairSteps, RelabelledBoundaryCellsKeepEveryEdgeManifold) {
 // way the mesh is the repaired one, untouched. (The accepted case, where
 // fewer stay inverted, is on real parts: pmi1 and the lever in
 // tests/pairmesh/test_pair_mesh_cli.py.)
-TEST(PairMeshRepairSteps, RelabellingThatDoesNotHelpIsRefused) {
+TEST(PairMeshRepairSteps, RelabellingElementByElementHelpsWhereAllAtOnceDoesNot) {
+  // Every finite cell of a knife inner (hostile labels): relabelling the
+  // cells of all inverted elements at once helps neither way (the last
+  // resort of 2c42da0 kept nothing here), but element by element some
+  // trials pay off. Whatever is kept must leave fewer inverted elements and
+  // no more needing repair.
   for (double slope : {0.03, 0.3}) {
     const SampleSet samples = knife(slope);
     const DelaunayVoronoi dv(samples.points);
@@ -248,10 +254,11 @@ TEST(PairMeshRepairSteps, RelabellingThatDoesNotHelpIsRefused) {
     ASSERT_GT(leftByRepair, 0u) << slope;
     ASSERT_FALSE(boundaryCellsOfInvertedElements(dv, inner, repairedOnly).empty()) << slope;
     const PairMesh m = buildPairMesh(dv, samples, inner);
-    EXPECT_EQ(m.counts.relabelledBoundaryCells, 0u) << slope;
-    EXPECT_EQ(m.counts.invertedAfterRepair, leftByRepair) << slope;
-    EXPECT_EQ(m.tets, repairedOnly.tets) << slope;
-    EXPECT_EQ(m.nodes, repairedOnly.nodes) << slope;
+    EXPECT_GT(m.counts.relabelledBoundaryCells, 0u) << slope;
+    EXPECT_LT(m.counts.invertedAfterRepair, leftByRepair) << slope;
+    EXPECT_EQ(m.counts.invertedAfterRepair, inverted(m)) << slope;
+    EXPECT_LE(countElementsNeedingRepair(m.nodes, m.tets), countElementsNeedingRepair(repairedOnly.nodes, repairedOnly.tets))
+        << slope;
   }
 }
 
@@ -606,44 +613,33 @@ TEST(PairMeshRepairSteps, RelabellingInTheCuspLeavesNothingInverted) {
   EXPECT_GT(helped, 0u);
 }
 
-namespace {
-
-void outerCellGoingInnerLeavesNothingInverted(const SampleSet& samples) {
-  const DelaunayVoronoi dv(samples.points);
-  const std::vector<std::uint8_t> inner = cuspBlockLabels(dv);
-  PairMesh repairedOnly = buildPairMesh(dv, samples, inner, nullptr, false);
-  ASSERT_GT(repairFlippedElements(repairedOnly, dv), 0u);
-  const PairMesh m = buildPairMesh(dv, samples, inner);
-  EXPECT_EQ(m.counts.invertedAfterRepair, 0u);
-  EXPECT_GT(m.counts.relabelledBoundaryCells, 0u);
-  std::size_t cellsMadeInner = 0;
-  for (Index n = 0; n < m.nodes.size(); ++n)
-    if (m.nodeCell[n] != kNoIndex && !inner[m.nodeCell[n]]) ++cellsMadeInner;
-  EXPECT_GT(cellsMadeInner, 0u);
-  // The cells changed hold at most 1e-3 of the volume; the coarse chords
-  // (h = 0.3 × the cylinder's radius) leave 1.7 % of it out.
-  const PairMeshValidity v = checkPairMesh(m);
-  EXPECT_TRUE(v.valid());
-  const double before = checkPairMesh(repairedOnly).enclosedVolume;
-  EXPECT_NEAR(v.enclosedVolume, before, 1e-3 * before);
-  EXPECT_NEAR(v.enclosedVolume, cuspBlockVolume(), 0.02 * cuspBlockVolume());
-}
-
-}  // namespace
-
-// The other way of the last resort, on two samplings of the cusp block
-// (found by a sweep of 4 spacings × 2 jitters × 12 seeds): an element stays
-// inverted after the repair and the cells going outer do not help; outer
-// cells next to it going inner leave none. On the second (h = 0.08, seed
-// 12) the outer cell across the inverted Vertex-Face element alone would
-// leave an edge with two runs of inner cells; it goes with the outer cells
-// it cuts off around that edge. The mesh's Voronoi nodes then include
-// cells the classifier put outside.
-TEST(PairMeshRepairSteps, OuterCellGoingInnerLeavesNothingInverted) {
-  for (const auto& [h, seed] : {std::pair<double, unsigned>{0.12, 2}, std::pair<double, unsigned>{0.08, 12}}) {
-    SCOPED_TRACE(h);
-    outerCellGoingInnerLeavesNothingInverted(cuspBlock(h, seed, 0.45));
-  }
+// Every sampling of the cusp block over 4 spacings × 2 jitters × 12 seeds
+// that the repair alone leaves with inverted elements (38 of 96) ends valid,
+// with none inverted and the volume kept within 1e-3. Two of them (h = 0.12
+// seed 2, h = 0.08 seed 12, jitter 0.45) needed outer cells going inner
+// until 2026-12-02; element-by-element trials going outer now suffice
+// (the going-inner path is exercised by NIST CTC-01 in the CLI tests).
+TEST(PairMeshRepairSteps, EveryCuspSamplingEndsValid) {
+  std::size_t repaired = 0;
+  for (double jitter : {0.3, 0.45})
+    for (double h : {0.06, 0.08, 0.1, 0.12})
+      for (unsigned seed = 1; seed <= 12; ++seed) {
+        SCOPED_TRACE(::testing::Message() << "jitter " << jitter << " h " << h << " seed " << seed);
+        const SampleSet samples = cuspBlock(h, seed, jitter);
+        const DelaunayVoronoi dv(samples.points);
+        const std::vector<std::uint8_t> inner = cuspBlockLabels(dv);
+        PairMesh repairedOnly = buildPairMesh(dv, samples, inner, nullptr, false);
+        if (repairFlippedElements(repairedOnly, dv) == 0) continue;
+        ++repaired;
+        const PairMesh m = buildPairMesh(dv, samples, inner);
+        EXPECT_EQ(m.counts.invertedAfterRepair, 0u);
+        EXPECT_GT(m.counts.relabelledBoundaryCells, 0u);
+        const PairMeshValidity v = checkPairMesh(m);
+        EXPECT_TRUE(v.valid());
+        const double before = checkPairMesh(repairedOnly).enclosedVolume;
+        EXPECT_NEAR(v.enclosedVolume, before, 1e-3 * before);
+      }
+  EXPECT_GE(repaired, 30u);  // the sweep still reaches the last resort
 }
 
 // Hostile labels: the all-inner knife with every fifth cell outer (holes
