@@ -3,7 +3,7 @@
 MedialAxis (Mesh::FeaturePython)
     Links one solid of a source object (Source, SolidIndex) and holds the whole
     inner medial axis as a mesh coloured by medial radius or by sheet.
-    Parameters: Spacing (0 = automatic), Theta, Rho, CheckInside; display:
+    Parameters: Spacing (0 = automatic), GradedSpacing, Theta, Rho, CheckInside; display:
     ColorBy, MaxSheetObjects. Read-only statistics: Samples, Vertices,
     Polygons, Sheets, Beta0, Beta1, Seconds, SpacingUsed, OracleDisagreements,
     Warnings. The full result (vertices, radius, polygons, sheets, provenance,
@@ -62,13 +62,20 @@ def icon_path(name):
 # Results: an in-memory LRU keyed by the input signature, and the object's own
 # ResultData file for its last signature.
 
+GRADED_SPACING_DOC = (
+    "Grade the sample spacing within each face: finer where it curves or the solid is thin, up to Spacing "
+    "elsewhere (fewer samples on cones, fillets, thin flanges); False = one spacing per face"
+)
+
 _CACHE_SIZE = 16
 _results = collections.OrderedDict()
 
 
-def input_signature(brep, spacing, theta, rho, check_inside):
+def input_signature(brep, spacing, theta, rho, check_inside, graded_spacing=False):
     digest = hashlib.sha1(brep.encode("utf-8", errors="replace")).hexdigest()
-    return f"{digest}|h={float(spacing)!r}|theta={float(theta)!r}|rho={float(rho)!r}|check={bool(check_inside)}"
+    signature = f"{digest}|h={float(spacing)!r}|theta={float(theta)!r}|rho={float(rho)!r}|check={bool(check_inside)}"
+    # Only when on: results stored by documents from before the switch keep their signature.
+    return signature + "|graded" if graded_spacing else signature
 
 
 def remember_result(signature, result):
@@ -285,6 +292,7 @@ class MedialAxisFeature(FeatureProxy):
         p(obj, "App::PropertyInteger", "SolidIndex", "Medial Axis", "Which solid of the source (0 = first)", 0)
         p(obj, "App::PropertyLength", "Spacing", "Medial Axis",
           "Target sample spacing in model units; 0 = automatic (bounding-box diagonal / 40)", 0.0)
+        p(obj, "App::PropertyBool", "GradedSpacing", "Medial Axis", GRADED_SPACING_DOC, False)
         p(obj, "App::PropertyAngle", "Theta", "Medial Axis",
           "Angle condition of CAD_MEDIAL in degrees (larger keeps fewer, flatter facets)", 5.0)
         p(obj, "App::PropertyFloat", "Rho", "Medial Axis",
@@ -292,7 +300,7 @@ class MedialAxisFeature(FeatureProxy):
         p(obj, "App::PropertyBool", "CheckInside", "Medial Axis",
           "Check every inner/outer decision with OCCT's exact classifier (slower; see OracleDisagreements)", True)
         p(obj, "App::PropertyBool", "BuildPairMesh", "Medial Axis",
-          "Also build the pair-mesh of this solid (a PairMesh child that follows Source, Spacing, Theta, Rho); "
+          "Also build the pair-mesh of this solid (a PairMesh child that follows Source, Spacing, GradedSpacing, Theta, Rho); "
           "False removes it (kept as a standalone PairMesh if another object uses it)", False)
         if "ColorBy" not in obj.PropertiesList:
             obj.addProperty("App::PropertyEnumeration", "ColorBy", "Display", "Colour by medial radius or by sheet")
@@ -352,7 +360,8 @@ class MedialAxisFeature(FeatureProxy):
         solid = source_solid(obj.Source, obj.SolidIndex)
         spacing, theta, rho = float(obj.Spacing.Value), float(obj.Theta.Value), float(obj.Rho)
         brep = solid.exportBrepToString()
-        signature = input_signature(brep, spacing, theta, rho, obj.CheckInside)
+        graded = bool(obj.GradedSpacing)
+        signature = input_signature(brep, spacing, theta, rho, obj.CheckInside, graded)
         result = None
         if signature == obj.InputSignature:
             result = get_result(obj)  # only display properties changed
@@ -361,7 +370,8 @@ class MedialAxisFeature(FeatureProxy):
         fresh = result is None
         if fresh:
             start = time.perf_counter()
-            results = api.compute(brep, spacing=spacing, theta=theta, rho=rho, check_inside=obj.CheckInside)
+            results = api.compute(brep, spacing=spacing, theta=theta, rho=rho, check_inside=obj.CheckInside,
+                                  graded_spacing=graded)
             if not results:
                 raise ValueError(f"{obj.Label}: no closed solid in '{obj.Source.Label}'")
             result = results[0]
@@ -775,6 +785,7 @@ def add_to_document(
     check_inside=True,
     results=None,
     recompute=True,
+    graded_spacing=False,
 ):
     """One MedialAxis object (with its sheet objects) per solid of `source`, a
     document object with a shape; returns the MedialAxis objects.
@@ -782,6 +793,7 @@ def add_to_document(
     results: optional precomputed MedialAxisResults, one per solid, for the
     same parameters (a GUI computes them in a worker thread first).
     theta None: 5 degrees for solids, 22.5 (pi/8) for Points / Mesh sources.
+    graded_spacing: the spacing graded within each face (GradedSpacing).
     Raises ValueError if `source` holds no solid (the message says what it
     holds) and whatever the computation raises (InputError, ...)."""
     if doc is None:
@@ -804,7 +816,9 @@ def add_to_document(
         if len(results) != len(solids):
             raise ValueError(f"{len(results)} results for {len(solids)} solid(s) of '{source.Label}'")
         for solid, result in zip(solids, results):
-            remember_result(input_signature(solid.exportBrepToString(), spacing, theta, rho, check_inside), result)
+            remember_result(
+                input_signature(solid.exportBrepToString(), spacing, theta, rho, check_inside, graded_spacing), result
+            )
     created = []
     for index in range(len(solids)):
         obj = doc.addObject("Mesh::FeaturePython", "MedialAxis")
@@ -815,6 +829,7 @@ def add_to_document(
         obj.Source = source
         obj.SolidIndex = index
         obj.Spacing = float(spacing)
+        obj.GradedSpacing = bool(graded_spacing) and not points
         obj.Theta = float(theta)
         obj.Rho = float(rho)
         obj.CheckInside = bool(check_inside)

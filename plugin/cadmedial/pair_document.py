@@ -33,6 +33,7 @@ import numpy as np
 
 from . import api
 from .document import (
+    GRADED_SPACING_DOC,
     FeatureProxy,
     _ViewProviderBase,
     _add_property,
@@ -69,8 +70,8 @@ def _proxy_type(obj):
         return None
 
 
-def pair_signature(brep, spacing, theta, rho):
-    return "pair|" + input_signature(brep, spacing, theta, rho, False)
+def pair_signature(brep, spacing, theta, rho, graded_spacing=False):
+    return "pair|" + input_signature(brep, spacing, theta, rho, False, graded_spacing)
 
 
 def get_pair_mesh(obj):
@@ -162,6 +163,7 @@ class PairMeshFeature(FeatureProxy):
         p(obj, "App::PropertyInteger", "SolidIndex", "Pair Mesh", "Which solid of the source (0 = first)", 0)
         p(obj, "App::PropertyLength", "Spacing", "Pair Mesh",
           "Target sample spacing in model units; 0 = automatic (bounding-box diagonal / 40)", 0.0)
+        p(obj, "App::PropertyBool", "GradedSpacing", "Pair Mesh", GRADED_SPACING_DOC, False)
         p(obj, "App::PropertyAngle", "Theta", "Pair Mesh", "Angle condition of CAD_MEDIAL (for OnSheets)", 5.0)
         p(obj, "App::PropertyFloat", "Rho", "Pair Mesh", "Ratio condition of CAD_MEDIAL (for OnSheets)", 8.0)
         p(obj, "App::PropertyLink", "MedialAxis", "Pair Mesh",
@@ -209,14 +211,16 @@ class PairMeshFeature(FeatureProxy):
         solid = source_solid(obj.Source, obj.SolidIndex)
         spacing, theta, rho = float(obj.Spacing.Value), float(obj.Theta.Value), float(obj.Rho)
         brep = solid.exportBrepToString()
-        signature = pair_signature(brep, spacing, theta, rho)
+        graded = bool(obj.GradedSpacing)
+        signature = pair_signature(brep, spacing, theta, rho, graded)
         mesh = get_pair_mesh(obj) if signature == obj.InputSignature else None
         if mesh is None:
             mesh = cached_result(signature)
         fresh = mesh is None
         if fresh:
             start = time.perf_counter()
-            results = api.compute(brep, spacing=spacing, theta=theta, rho=rho, check_inside=False, pair_mesh=True)
+            results = api.compute(brep, spacing=spacing, theta=theta, rho=rho, check_inside=False, pair_mesh=True,
+                                  graded_spacing=graded)
             if not results:
                 raise ValueError(f"{obj.Label}: no closed solid in '{obj.Source.Label}'")
             mesh = results[0].pair_mesh
@@ -282,7 +286,7 @@ class PairMeshFeature(FeatureProxy):
         obj.SpacingUsed = float(r.get("spacing", 0.0))
 
 
-FOLLOWED = ("Source", "SolidIndex", "Spacing", "Theta", "Rho")
+FOLLOWED = ("Source", "SolidIndex", "Spacing", "GradedSpacing", "Theta", "Rho")
 
 
 def set_follow_modes(obj):
@@ -295,7 +299,7 @@ def set_follow_modes(obj):
 
 
 def follow_medial_axis(obj):
-    """Copies Source, SolidIndex, Spacing, Theta, Rho from the linked MedialAxis
+    """Copies Source, SolidIndex, Spacing, GradedSpacing, Theta, Rho from the linked MedialAxis
     (if any) into a PairMesh object; only values that differ are set."""
     medial = getattr(obj, "MedialAxis", None)
     if medial is None:
@@ -306,8 +310,8 @@ def follow_medial_axis(obj):
         raise ValueError(f"{obj.Label}: '{medial.Label}' has no B-rep source; {api.PAIR_MESH_MESSAGE}")
     if obj.Source != medial.Source:
         obj.Source = medial.Source
-    for name in ("SolidIndex", "Spacing", "Theta", "Rho"):
-        value = getattr(medial, name)
+    for name in FOLLOWED[1:]:
+        value = getattr(medial, name, False)  # GradedSpacing: missing on documents from before it
         value = getattr(value, "Value", value)  # Quantity -> float
         if getattr(getattr(obj, name), "Value", getattr(obj, name)) != value:
             setattr(obj, name, value)
@@ -503,7 +507,8 @@ def pair_mesh_sources(obj):
         if "Shape" not in obj.Source.PropertiesList:
             raise ValueError(f"'{obj.Label}' was made from points or a mesh; {api.PAIR_MESH_MESSAGE}")
         return obj.Source, [obj.SolidIndex], dict(spacing=float(obj.Spacing.Value), theta=float(obj.Theta.Value),
-                                                  rho=float(obj.Rho))
+                                                  rho=float(obj.Rho),
+                                                  graded_spacing=bool(getattr(obj, "GradedSpacing", False)))
     if is_pair_mesh(obj) or is_iso_surface(obj):
         raise ValueError(f"'{obj.Label}' is a pair-mesh result itself; select a solid or a medial axis")
     from .document import is_point_object
@@ -513,10 +518,11 @@ def pair_mesh_sources(obj):
     return obj, list(range(len(source_solids(obj)))), {}
 
 
-def add_pair_mesh(doc, source, spacing=None, theta=None, rho=None, solids=None, results=None, recompute=True):
+def add_pair_mesh(doc, source, spacing=None, theta=None, rho=None, solids=None, results=None, recompute=True,
+                  graded_spacing=None):
     """One PairMesh object per solid of `source` (a solid object, or a
     MedialAxis object: its source, solid and, unless given, its spacing,
-    theta and rho are used; else 0 = automatic, 5, 8); returns them.
+    theta, rho and graded spacing are used; else 0 = automatic, 5, 8, off); returns them.
     solids: solid indices (default: all of a solid object). results: optional
     precomputed api.PairMesh per solid (a GUI computes them in a worker thread
     first) for the same parameters. Raises ValueError for a source without a
@@ -527,6 +533,7 @@ def add_pair_mesh(doc, source, spacing=None, theta=None, rho=None, solids=None, 
     spacing = params.get("spacing", 0.0) if spacing is None else float(spacing)
     theta = params.get("theta", 5.0) if theta is None else float(theta)
     rho = params.get("rho", 8.0) if rho is None else float(rho)
+    graded_spacing = params.get("graded_spacing", False) if graded_spacing is None else bool(graded_spacing)
     if solids is not None:
         indices = list(solids)
     if results is not None:
@@ -534,7 +541,7 @@ def add_pair_mesh(doc, source, spacing=None, theta=None, rho=None, solids=None, 
             raise ValueError(f"{len(results)} results for {len(indices)} solid(s)")
         for index, mesh in zip(indices, results):
             brep = source_solid(source, index).exportBrepToString()
-            remember_result(pair_signature(brep, spacing, theta, rho), mesh)
+            remember_result(pair_signature(brep, spacing, theta, rho, graded_spacing), mesh)
     created = []
     many = len(source_solids(source)) > 1
     for index in indices:
@@ -546,6 +553,7 @@ def add_pair_mesh(doc, source, spacing=None, theta=None, rho=None, solids=None, 
         obj.Source = source
         obj.SolidIndex = index
         obj.Spacing = float(spacing)
+        obj.GradedSpacing = graded_spacing
         obj.Theta = float(theta)
         obj.Rho = float(rho)
         created.append(obj)

@@ -116,6 +116,18 @@ def main():
     axis.Rho = 6.0
     doc.recompute()
     check(healthy(axis) and cadmedial.document.get_result(axis).theta == 10.0, "Theta / Rho recompute")
+    samples = axis.Samples
+    check(axis.GradedSpacing is False and axis.getDocumentationOfProperty("GradedSpacing"),
+          "GradedSpacing: off by default, with a tooltip")
+    axis.GradedSpacing = True
+    doc.recompute()
+    graded_result = cadmedial.document.get_result(axis)
+    check(healthy(axis) and graded_result.summary["graded_spacing"] is True and axis.InputSignature.endswith("|graded")
+          and axis.Samples != samples, f"GradedSpacing recomputes graded: {samples} -> {axis.Samples} samples")
+    axis.GradedSpacing = False
+    doc.recompute()
+    check(healthy(axis) and axis.Samples == samples and not axis.InputSignature.endswith("|graded"),
+          "GradedSpacing off again: the uniform result")
     if axis.Sheets > 3:
         axis.MaxSheetObjects = 3
         doc.recompute()

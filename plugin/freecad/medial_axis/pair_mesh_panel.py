@@ -98,8 +98,9 @@ class PairMeshTaskPanel:
         return self.job is not None
 
     def _params(self, params):
-        """Theta / rho of a selected medial axis, else the defaults; the spacing of the panel."""
-        return self.spacing.value(), params.get("theta", 5.0), params.get("rho", 8.0)
+        """Theta / rho / graded spacing of a selected medial axis, else the defaults; the spacing of the panel."""
+        return (self.spacing.value(), params.get("theta", 5.0), params.get("rho", 8.0),
+                params.get("graded_spacing", False))
 
     def accept(self):
         if self.job is not None:
@@ -111,12 +112,12 @@ class PairMeshTaskPanel:
             self._fail(f"could not read the solids: {e}")
             return False
         # One parameter set per run (the first target's theta / rho).
-        spacing, theta, rho = self._params(self.targets[0][3])
+        spacing, theta, rho, graded = self._params(self.targets[0][3])
         from cadmedial import pair_document
 
         # The FemMesh is built in the worker too (pure data, no document):
         # for large meshes it takes longer than the pair-mesh itself.
-        self.job = _Job(items, spacing, theta, rho, False, pair_mesh=True,
+        self.job = _Job(items, spacing, theta, rho, False, pair_mesh=True, graded_spacing=graded,
                         prepare=lambda result: pair_document.prebuild_fem_mesh(result.pair_mesh))
         self.spacing.setEnabled(False)
         self.progress.setVisible(True)
@@ -170,7 +171,8 @@ class PairMeshTaskPanel:
             for _obj, source, indices, _params in self.targets:
                 results = [r.pair_mesh for r in job.results[offset:offset + len(indices)]]
                 created += pair_document.add_pair_mesh(doc, source, spacing=p["spacing"], theta=p["theta"],
-                                                       rho=p["rho"], solids=indices, results=results)
+                                                       rho=p["rho"], solids=indices, results=results,
+                                                       graded_spacing=p["graded_spacing"])
                 offset += len(indices)
             doc.commitTransaction()
         except Exception as e:  # noqa: BLE001

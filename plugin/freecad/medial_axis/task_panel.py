@@ -33,12 +33,13 @@ PAIR_MESH_STAGE_START = {"read": 0.0, "sample": 0.05, "medial": 0.2, "pair_mesh"
 class _Job:
     """One run in a worker thread: a list of (label, BREP text) to compute."""
 
-    def __init__(self, items, spacing, theta, rho, check_inside, pair_mesh=False, prepare=None):
+    def __init__(self, items, spacing, theta, rho, check_inside, pair_mesh=False, prepare=None, graded_spacing=False):
         """prepare(result): optional work on each result in the worker thread
         (e.g. building a FEM mesh) so the main thread has less to do."""
         self.items = items
         self.prepare = prepare
-        self.params = dict(spacing=spacing, theta=theta, rho=rho, check_inside=check_inside)
+        self.params = dict(spacing=spacing, theta=theta, rho=rho, check_inside=check_inside,
+                           graded_spacing=bool(graded_spacing))
         if pair_mesh:
             self.params["pair_mesh"] = True
         self.stage_start = PAIR_MESH_STAGE_START if pair_mesh else STAGE_START
@@ -146,12 +147,17 @@ class MedialAxisTaskPanel:
         self.rho.setRange(0.1, 1000.0)
         self.rho.setDecimals(2)
         self.rho.setToolTip("Ratio condition of CAD_MEDIAL (default 8)")
+        from cadmedial.document import GRADED_SPACING_DOC
+
+        self.graded = QtWidgets.QCheckBox("graded within each face")
+        self.graded.setToolTip(GRADED_SPACING_DOC)
         self.color_by = QtWidgets.QComboBox()
         self.color_by.addItems(["Radius", "Sheet"])
         self.color_by.setToolTip("Colour the sheets by medial radius or give every sheet its own colour")
         self.check_inside = QtWidgets.QCheckBox("check inner/outer with the exact classifier")
         self.check_inside.setToolTip("Counts disagreements of the walk with OCCT's classifier (slower)")
         grid.addRow("Spacing", self.spacing)
+        grid.addRow("", self.graded)
         grid.addRow("Theta", self.theta)
         grid.addRow("Rho", self.rho)
         grid.addRow("Colour by", self.color_by)
@@ -172,6 +178,7 @@ class MedialAxisTaskPanel:
 
         if self.edit is not None:
             self.spacing.setValue(self.edit.Spacing.Value)
+            self.graded.setChecked(bool(getattr(self.edit, "GradedSpacing", False)))
             self.theta.setValue(self.edit.Theta.Value)
             self.rho.setValue(self.edit.Rho)
             self.color_by.setCurrentText(self.edit.ColorBy)
@@ -211,8 +218,8 @@ class MedialAxisTaskPanel:
             self._fail(f"could not read the solids: {e}")
             return False
         self.job = _Job(items, self.spacing.value(), self.theta.value(), self.rho.value(),
-                        self.check_inside.isChecked())
-        for w in (self.spacing, self.theta, self.rho, self.color_by, self.check_inside):
+                        self.check_inside.isChecked(), graded_spacing=self.graded.isChecked())
+        for w in self._inputs():
             w.setEnabled(False)
         self.progress.setVisible(True)
         self.progress.setValue(0)
@@ -249,12 +256,16 @@ class MedialAxisTaskPanel:
         self.timer.stop()
         self.job = None
         if job.error is not None:
-            for w in (self.spacing, self.theta, self.rho, self.color_by, self.check_inside):
+            for w in self._inputs():
                 w.setEnabled(True)
             self.progress.setVisible(False)
             self._fail(f"{type(job.error).__name__}: {job.error}" if not str(job.error) else str(job.error))
             return
         self._finish(job)
+
+    def _inputs(self):
+        """The widgets of the parameters, disabled while a run goes on."""
+        return (self.spacing, self.graded, self.theta, self.rho, self.color_by, self.check_inside)
 
     def _fail(self, message):
         self.last_error = message
@@ -276,7 +287,7 @@ class MedialAxisTaskPanel:
                     n = len(document.source_solids(source))
                     created += document.add_to_document(
                         doc, source, spacing=p["spacing"], theta=p["theta"], rho=p["rho"],
-                        check_inside=p["check_inside"], color_by=color_by,
+                        check_inside=p["check_inside"], color_by=color_by, graded_spacing=p["graded_spacing"],
                         results=job.results[offset:offset + n])
                     offset += n
                     self._show_inside(source)
@@ -286,8 +297,9 @@ class MedialAxisTaskPanel:
                 solid = document.source_solid(obj.Source, obj.SolidIndex)
                 document.remember_result(
                     document.input_signature(solid.exportBrepToString(), p["spacing"], p["theta"], p["rho"],
-                                             p["check_inside"]), job.results[0])
+                                             p["check_inside"], p["graded_spacing"]), job.results[0])
                 obj.Spacing = p["spacing"]
+                obj.GradedSpacing = p["graded_spacing"]
                 obj.Theta = p["theta"]
                 obj.Rho = p["rho"]
                 obj.CheckInside = p["check_inside"]
@@ -299,7 +311,7 @@ class MedialAxisTaskPanel:
         except Exception as e:  # noqa: BLE001
             doc.abortTransaction()
             self._fail(str(e))
-            for w in (self.spacing, self.theta, self.rho, self.color_by, self.check_inside):
+            for w in self._inputs():
                 w.setEnabled(True)
             self.progress.setVisible(False)
             return
