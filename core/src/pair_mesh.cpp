@@ -83,16 +83,19 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
     const double budget = inverted > 0 ? 1e-3 * std::abs(boundaryEnclosedVolume(mesh)) : 0;
     double changed = 0;
     std::size_t needingRepair = inverted > 0 ? countElementsNeedingRepair(mesh.nodes, mesh.tets) : 0;
-    double invertedVolumeNow = inverted > 0 ? invertedVolume(mesh) : 0;
+    // The inverted volume only decides ties on the count: it is walked
+    // for when one comes up (negative: not known yet).
+    double invertedVolumeNow = -1;
     // One trial: the cells change side, the mesh is rebuilt around them and
-    // repaired; kept (true) when it is better.
+    // repaired; kept (true) when it is better. Trials over the volume budget
+    // cost nothing and do not count.
     int trials = 0;
     auto tryRelabelling = [&](const std::vector<Index>& cells, bool goingInner) {
       if (cells.empty() || trials >= 32) return false;
-      ++trials;
       double volume = 0;
       for (Index c : cells) volume += std::abs(dv.triangulation().tetrahedron(dv.cell(c)).volume());
       if (changed + volume > budget) return false;
+      ++trials;
       std::vector<std::uint8_t> trialInner = inner;
       for (Index c : cells) trialInner[c] = goingInner ? 1 : 0;
       PairMesh trial = mesh;
@@ -106,10 +109,13 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
       // Fewer inverted, or as many with less volume inverted (a fold pushed
       // to a smaller cell, which the next pass may remove): the pair (count,
       // volume) only decreases, so the passes cannot cycle.
-      const double trialInvertedVolume = invertedVolume(trial);
-      if (trialNeedingRepair > needingRepair || trialInverted > inverted ||
-          (trialInverted == inverted && !(trialInvertedVolume < 0.5 * invertedVolumeNow)))
-        return false;
+      if (trialNeedingRepair > needingRepair || trialInverted > inverted) return false;
+      double trialInvertedVolume = -1;
+      if (trialInverted == inverted) {
+        if (invertedVolumeNow < 0) invertedVolumeNow = invertedVolume(mesh);
+        trialInvertedVolume = invertedVolume(trial);
+        if (!(trialInvertedVolume < 0.5 * invertedVolumeNow)) return false;
+      }
       // Counts of the kept mesh, except those of the whole history:
       // inverted before any repair, relabelled cells, and node moves and
       // polygon re-triangulations summed over the passes kept (split
@@ -134,10 +140,10 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
       // All inverted elements at once first (one rebuild and repair); when
       // that helps neither way, element by element (a change that mends one
       // element can fold another, and together they cancel out).
-      bool kept = tryRelabelling(boundaryCellsOfInvertedElements(dv, inner, mesh), false) ||
-                  tryRelabelling(outerCellsAcrossInvertedElements(dv, inner, mesh), true);
+      const std::vector<std::size_t> elements = invertedElements(mesh);
+      bool kept = tryRelabelling(boundaryCellsOfElements(dv, inner, mesh, elements), false) ||
+                  tryRelabelling(outerCellsAcrossElements(dv, inner, mesh, elements), true);
       if (!kept) {
-        const std::vector<std::size_t> elements = invertedElements(mesh);
         for (std::size_t k = 0; k < elements.size() && k < 16 && !kept; ++k) {
           const std::vector<std::size_t> one{elements[k]};
           for (int rings = 0; rings < 4 && !kept; ++rings)

@@ -180,11 +180,6 @@ std::vector<Index> boundaryCellsOfElements(const DelaunayVoronoi& dv, const std:
   return growKeepingEdgesManifold(dv, inner, std::move(cells), /*goingInner=*/false);
 }
 
-std::vector<Index> outerCellsAcrossInvertedElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
-                                                    const PairMesh& mesh) {
-  return outerCellsAcrossElements(dv, inner, mesh, invertedElements(mesh));
-}
-
 std::vector<Index> outerCellsAcrossElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
                                             const PairMesh& mesh, const std::vector<std::size_t>& elements) {
   const auto& dt = dv.triangulation();

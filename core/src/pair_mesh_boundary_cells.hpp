@@ -42,10 +42,8 @@ std::vector<Index> boundaryCellsOfElements(const DelaunayVoronoi& dv, const std:
 // cells going outer, they go with the runs of outer cells they cut off
 // around an edge (all but the widest, never one with an infinite cell), and
 // a group that would still leave a non-manifold edge stays outer. Vertices
-// are not checked. Sorted, each cell once.
-std::vector<Index> outerCellsAcrossInvertedElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
-                                                    const PairMesh& mesh);
-// The same around the given elements only (indices into mesh.tets).
+// are not checked. Sorted, each cell once. `elements`: indices into
+// mesh.tets, all inverted ones or one at a time.
 std::vector<Index> outerCellsAcrossElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
                                             const PairMesh& mesh, const std::vector<std::size_t>& elements);
 

@@ -287,6 +287,10 @@ class PairMeshFeature(FeatureProxy):
 
 
 FOLLOWED = ("Source", "SolidIndex", "Spacing", "GradedSpacing", "Theta", "Rho")
+# Followed properties that documents saved before them lack (a MedialAxis
+# restored after its PairMesh may not have them yet), with the value they
+# stood for then.
+ADDED_LATER = {"GradedSpacing": False}
 
 
 def set_follow_modes(obj):
@@ -311,7 +315,7 @@ def follow_medial_axis(obj):
     if obj.Source != medial.Source:
         obj.Source = medial.Source
     for name in FOLLOWED[1:]:
-        value = getattr(medial, name, False)  # GradedSpacing: missing on documents from before it
+        value = getattr(medial, name, ADDED_LATER[name]) if name in ADDED_LATER else getattr(medial, name)
         value = getattr(value, "Value", value)  # Quantity -> float
         if getattr(getattr(obj, name), "Value", getattr(obj, name)) != value:
             setattr(obj, name, value)
