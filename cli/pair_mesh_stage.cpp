@@ -89,10 +89,7 @@ PairMeshStage buildPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& sam
   return stage;
 }
 
-nlohmann::json runPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& samples, const TopoDS_Shape& solid,
-                                const MedialComplex& axis, const std::vector<double>& isoValues,
-                                const std::string& dir) {
-  PairMeshStage stage = buildPairMeshStage(dv, samples, solid, axis);
+void writePairMeshFiles(PairMeshStage& stage, const std::vector<double>& isoValues, const std::string& dir) {
   const PairMesh& mesh = stage.mesh;
   nlohmann::json& report = stage.report;
   const auto t = Clock::now();
@@ -106,7 +103,6 @@ nlohmann::json runPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& samp
   for (double iso : isoValues) isoFiles.push_back(isoSurfaceFileName(iso));
   report["iso_files"] = isoFiles;
   report["seconds"]["write"] = secondsSince(t);
-  return report;
 }
 
 }  // namespace cadmedial

@@ -28,11 +28,9 @@ struct PairMeshStage {
 PairMeshStage buildPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& samples, const TopoDS_Shape& solid,
                                  const MedialComplex& axis);
 
-// Builds and writes pairmesh.vtu, pairmesh.node/.ele and iso_<t>.ply for each
-// t into dir; returns the "pair_mesh" summary object.
-nlohmann::json runPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& samples, const TopoDS_Shape& solid,
-                                const MedialComplex& axis, const std::vector<double>& isoValues,
-                                const std::string& dir);
+// Writes pairmesh.vtu, pairmesh.node/.ele and iso_<t>.ply for each t into
+// dir; adds "iso_files" and seconds.write to stage.report.
+void writePairMeshFiles(PairMeshStage& stage, const std::vector<double>& isoValues, const std::string& dir);
 
 // Validity, exact volume and verdict of a pair-mesh ("pair_mesh" in
 // summary.json and eval.json).

@@ -11,15 +11,13 @@
 
 #include <tbb/parallel_invoke.h>
 
-#include <BRepClass3d_SolidClassifier.hxx>
-
 #include "atomic_file.hpp"
 #include "cadmedial/brep_io.hpp"
 #include "cadmedial/errors.hpp"
-#include "cadmedial/sample_and_triangulate.hpp"
 #include "cadmedial/sampling.hpp"
 #include "medial_outputs.hpp"
 #include "pair_mesh_stage.hpp"
+#include "solid_run.hpp"
 #include "medial_summary.hpp"
 #include "point_input.hpp"
 #include "run_points_command.hpp"
@@ -30,6 +28,27 @@ namespace cadmedial {
 namespace {
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// One line when the pair-mesh was not valid at the spacing asked and the
+// solid was sampled again (solid_run.hpp).
+void printResampling(const nlohmann::json& attempts) {
+  if (attempts.size() < 2) return;
+  auto spacing = [](const nlohmann::json& a) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", a["spacing"].get<double>());
+    return std::string(text);
+  };
+  auto verdict = [](const nlohmann::json& a) {
+    return a["valid"].get<bool>() ? std::string("valid") : a["inverted"].dump() + " inverted";
+  };
+  std::string line = "       pair-mesh: not valid at spacing " + spacing(attempts[0]) + " (" + verdict(attempts[0]) +
+                     "), sampled again at";
+  for (std::size_t k = 1; k < attempts.size(); ++k)
+    line += std::string(k > 1 ? "," : "") + " " + spacing(attempts[k]) + " (" + verdict(attempts[k]) + ")";
+  for (const auto& a : attempts)
+    if (a["kept"].get<bool>()) line += "; kept " + spacing(a);
+  std::printf("%s\n", line.c_str());
+}
 }  // namespace
 
 int runRunCommand(const RunCommandOptions& options) {
@@ -62,18 +81,9 @@ int runRunCommand(const RunCommandOptions& options) {
     const auto solidStart = Clock::now();
     MedialParams params = options.params;
     params.computeTopology = false;  // below, while the files are written
-    const TriangulatedSamples run = sampleAndTriangulate(model.solids[i], sampling, params.mayReadCellSides());
-    const SolidSampling& sampled = run.sampled;
-    const DelaunayVoronoi& dv = *run.triangulation;
-
-    InsideOracle oracle;
-    BRepClass3d_SolidClassifier classifier(model.solids[i]);
-    if (options.checkWithOracle)
-      oracle = [&classifier](const Vec3& p) {
-        classifier.Perform(gp_Pnt(p[0], p[1], p[2]), 1e-9);
-        return classifier.State() == TopAbs_IN;
-      };
-    MedialResult medial = computeCadMedial(dv, sampled.samples, *run.prepared, params, oracle);
+    SolidResult run = runSolid(model.solids[i], sampling, params, options.checkWithOracle, options.pairMesh);
+    const SolidSampling& sampled = run.triangulated.sampled;
+    MedialResult& medial = run.medial;
 
     t = Clock::now();
     const std::string dir = (std::filesystem::path(options.outDir) / ("solid_" + std::to_string(i))).string();
@@ -92,12 +102,14 @@ int runRunCommand(const RunCommandOptions& options) {
 
     nlohmann::json summary = medialSummaryJson(sampled.report, medial, options.params);
     if (options.pairMesh) {
-      summary["pair_mesh"] = runPairMeshStage(dv, sampled.samples, model.solids[i], medial, options.isoValues, dir);
+      writePairMeshFiles(*run.pairMesh, options.isoValues, dir);
+      summary["pair_mesh"] = run.pairMesh->report;
       const auto& pm = summary["pair_mesh"];
       std::printf("       pair-mesh: %zu tetrahedra, %zu inverted, volume error %.3g %%, %s\n",
                   pm["tetrahedra"].get<std::size_t>(), pm["inverted"].get<std::size_t>(),
                   pm["volume_error"].is_null() ? NAN : 100 * pm["volume_error"].get<double>(),
                   pm["pass"].get<bool>() ? "valid" : "NOT VALID");
+      printResampling(pm["attempts"]);
     }
     summary["model"] = options.model;
     summary["solid"] = i;

@@ -486,6 +486,11 @@ def compute(source, spacing=0.0, theta=None, rho=8.0, pair_mesh=False, check_ins
       triangulation; each result then has .pair_mesh (a PairMesh). Needs a
       B-rep solid: ValueError for point clouds and meshes. Adds the stage
       "pair_mesh" (exact OCCT inner labels, construction, repair, validity).
+      A pair-mesh that is not valid at the spacing asked makes the solid be
+      sampled again at 0.97 and 0.94 times it (the stages "sample", "medial",
+      "pair_mesh" come again); the first valid attempt is returned, axis and
+      pair-mesh together (.spacing is the one kept), and
+      pair_mesh.report["attempts"] lists every attempt.
     check_inside: count disagreements of the inner/outer walk with OCCT's exact
       classifier (summary["diagnostics"]["walk_oracle_disagreements"]).
     progress(stage, solid, solids): called between stages ("read", "sample",

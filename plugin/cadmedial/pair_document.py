@@ -111,6 +111,12 @@ def validity_lines(mesh):
         f"repair {seconds.get('repair', 0):.2f} s, check {seconds.get('check', 0):.2f} s",
         "verdict: " + ("valid" if mesh.valid else "NOT valid") + (", PASS" if r.get("pass") else ", FAIL"),
     ]
+    attempts = r.get("attempts") or []
+    if len(attempts) > 1:  # not valid at the spacing asked: sampled again finer (cli/solid_run.hpp)
+        tried = ", ".join(f"{a['spacing']:.4g} ({'valid' if a['valid'] else str(a['inverted']) + ' inverted'})"
+                          for a in attempts)
+        kept = next((a["spacing"] for a in attempts if a.get("kept")), attempts[-1]["spacing"])
+        lines.append(f"sampled again: spacings tried {tried}; kept {kept:.4g}")
     return lines
 
 

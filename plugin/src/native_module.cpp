@@ -29,7 +29,6 @@
 #include <vector>
 
 #include <BRepBndLib.hxx>
-#include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepGProp.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
@@ -46,6 +45,7 @@
 #include "medial_writers.hpp"
 #include "point_input.hpp"
 #include "report_json.hpp"
+#include "solid_run.hpp"
 
 namespace py = pybind11;
 
@@ -205,13 +205,6 @@ struct SolidRun {
   double secondsAxis = 0;  // wall time from sampling to the axis (stages overlap)
 };
 
-InsideOracle makeOracle(BRepClass3d_SolidClassifier& classifier) {
-  return [&classifier](const Vec3& p) {
-    classifier.Perform(gp_Pnt(p[0], p[1], p[2]), 1e-9);
-    return classifier.State() == TopAbs_IN;
-  };
-}
-
 py::list compute(const std::string& source, double spacing, double theta, double rho, bool checkInside,
                  py::object progressCallback, bool pairMesh, bool gradedSpacing) {
   if (!(spacing >= 0)) throw py::value_error("spacing must be >= 0 (0 = automatic), got " + std::to_string(spacing));
@@ -233,26 +226,15 @@ py::list compute(const std::string& source, double spacing, double theta, double
     runs.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       runs[i].secondsRead = secondsRead;
-      progress.report("sample", i, n);
       SamplingParams sp;
       sp.spacing = spacing;
       sp.gradedSpacing = gradedSpacing;
-      // The triangulation is built while the faces are reconstructed; the
-      // pair-mesh lives on it too.
-      const auto solidStart = Clock::now();
-      TriangulatedSamples run = sampleAndTriangulate(input.solids[i], sp, params.mayReadCellSides());
-      runs[i].sampled = std::move(run.sampled);
-      progress.report("medial", i, n);
-      InsideOracle oracle;
-      BRepClass3d_SolidClassifier classifier(input.solids[i]);
-      if (checkInside) oracle = makeOracle(classifier);
-      const SampleSet& samples = runs[i].sampled.samples;
-      const DelaunayVoronoi& dv = *run.triangulation;
-      runs[i].medial = computeCadMedial(dv, samples, *run.prepared, params, oracle);
-      runs[i].secondsAxis = secondsSince(solidStart);
-      if (!pairMesh) continue;
-      progress.report("pair_mesh", i, n);
-      runs[i].pairMesh = buildPairMeshStage(dv, samples, input.solids[i], runs[i].medial);
+      SolidResult run = runSolid(input.solids[i], sp, params, checkInside, pairMesh,
+                              [&](const char* stage) { progress.report(stage, i, n); });
+      runs[i].sampled = std::move(run.triangulated.sampled);
+      runs[i].medial = std::move(run.medial);
+      runs[i].secondsAxis = run.secondsAxis;
+      runs[i].pairMesh = std::move(run.pairMesh);
     }
     progress.report("done", n, n);
   });

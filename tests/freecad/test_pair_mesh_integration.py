@@ -62,6 +62,21 @@ def main():
     print(f"      {pm.Tetrahedra} tetrahedra ({pm.FaceVertex} FV, {pm.EdgeEdge} EE, {pm.VertexFace} VF), "
           f"{pm.Nodes} nodes, inverted {pm.Inverted}, volume error {pm.VolumeError:.3g} %, {pm.Seconds} s")
     result = pair_document.get_pair_mesh(pm)
+    attempts = result.report.get("attempts")
+    check(attempts is not None and len(attempts) == 1 and attempts[0]["kept"] and attempts[0]["valid"],
+          f"valid at the spacing asked, sampled once: {attempts}")
+    check(not any(line.startswith("sampled again") for line in pair_document.validity_lines(result)),
+          "no 'sampled again' line in the report")
+    # A pair-mesh that was sampled again (cli/solid_run.hpp) says so in the Report view.
+    import copy
+    resampled = copy.copy(result)
+    resampled.report = dict(result.report, attempts=[
+        {"spacing": 8.93, "inverted": 1, "valid": False, "kept": False},
+        {"spacing": 8.6621, "inverted": 1, "valid": False, "kept": False},
+        {"spacing": 8.3942, "inverted": 0, "valid": True, "kept": True}])
+    last = pair_document.validity_lines(resampled)[-1]
+    check(last == "sampled again: spacings tried 8.93 (1 inverted), 8.662 (1 inverted), 8.394 (valid); kept 8.394",
+          f"report line: {last!r}")
     check(fem.VolumeCount == pm.Tetrahedra == result.tet_count and fem.TetraCount == pm.Tetrahedra,
           f"FemMesh holds {fem.VolumeCount} volumes = {pm.Tetrahedra} tetrahedra")
     check(fem.NodeCount == pm.Nodes == result.node_count, f"FemMesh holds {fem.NodeCount} nodes")

@@ -101,6 +101,8 @@ class PairMeshCli(unittest.TestCase):
             with self.subTest(solid=name):
                 self.assertGreater(pm["tetrahedra"], 0)
                 self.assertEqual(pm["inverted"], 0)
+                # Valid at the spacing asked: the repair alone, no sampling again.
+                self.assertEqual(len(pm["attempts"]), 1, pm["attempts"])
                 self.assertLessEqual(pm["gap_error"], 1e-9)
                 self.assertLessEqual(pm["overlap_error"], 1e-12)
                 self.assertEqual(pm["boundary_triangles_not_in_one_vertex_face"], 0)
@@ -188,6 +190,44 @@ class PairMeshCli(unittest.TestCase):
                 self.assertEqual(pm["boundary_edges_not_shared"], 0)
                 self.assertLessEqual(pm["overlap_error"], 1e-12)
                 self.assertTrue(pm["valid"])
+                self.assertEqual(len(pm["attempts"]), 1, pm["attempts"])
+
+    def test_not_valid_at_the_spacing_asked_samples_again_finer(self):
+        # The lever at h = 8.93 keeps 1 inverted element at its cusp, and at
+        # 0.97 h too; at 0.94 h it is valid. The run keeps that one: axis and
+        # pair-mesh of the same samples, every attempt in the summary, a line
+        # on stdout.
+        model = os.path.join(PUBLIC_DIR, "bm2_ec_lever-A.stp")
+        if not os.path.isfile(model):
+            self.skipTest("no ../shared/models/public")
+        out = os.path.join(self.tmp, "lever")
+        run = subprocess.run([CADMEDIAL, "run", model, "-o", out, "--pair-mesh", "--no-oracle", "--spacing", "8.93"],
+                             capture_output=True, text=True, timeout=600)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        summary = load_json(os.path.join(out, "solid_0", "summary.json"))
+        pm = summary["pair_mesh"]
+        print(run.stdout)
+        attempts = pm["attempts"]
+        self.assertEqual([a["spacing_factor"] for a in attempts], [1.0, 0.97, 0.94])
+        self.assertEqual([a["valid"] for a in attempts], [False, False, True])
+        self.assertEqual([a["kept"] for a in attempts], [False, False, True])
+        self.assertGreater(attempts[0]["inverted"], 0)
+        self.assertAlmostEqual(attempts[0]["spacing"], 8.93)
+        self.assertAlmostEqual(summary["spacing"], 0.94 * 8.93)
+        self.assertEqual(summary["counts"]["samples"], attempts[2]["samples"])
+        self.assertTrue(pm["valid"])
+        self.assertEqual(pm["inverted"], 0)
+        self.assertIn("not valid at spacing 8.93 (1 inverted), sampled again at", run.stdout)
+        self.assertIn("; kept 8.394", run.stdout)
+        # The files are those of the attempt kept (eval would take 80 s more).
+        with open(os.path.join(out, "solid_0", "pairmesh.ele"), encoding="ascii") as f:
+            line = f.readline()
+            while line.startswith("#"):  # TetGen comment lines
+                line = f.readline()
+            self.assertEqual(int(line.split()[0]), pm["tetrahedra"])
+        with open(os.path.join(out, "solid_0", "medial.ply"), encoding="ascii") as f:
+            header = f.read(2000)
+        self.assertIn("element vertex %d\n" % summary["counts"]["medial_vertices"], header)
 
     def test_point_cloud_pair_mesh_is_refused_with_a_warning(self):
         cloud = os.path.join(self.tmp, "cloud.xyz")

@@ -1,0 +1,81 @@
+#include "solid_run.hpp"
+
+#include <chrono>
+
+#include <BRepClass3d_SolidClassifier.hxx>
+
+namespace cadmedial {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+void call(const std::function<void(const char*)>& stage, const char* name) {
+  if (stage) stage(name);
+}
+
+// One sampling at `sampling` through the axis and, when asked, the pair-mesh.
+SolidResult attempt(const TopoDS_Shape& solid, const SamplingParams& sampling, const MedialParams& params,
+                 bool withOracle, bool pairMesh, const std::function<void(const char*)>& stage) {
+  SolidResult run;
+  call(stage, "sample");
+  const auto start = Clock::now();
+  run.triangulated = sampleAndTriangulate(solid, sampling, params.mayReadCellSides());
+  call(stage, "medial");
+  InsideOracle oracle;
+  BRepClass3d_SolidClassifier classifier(solid);
+  if (withOracle)
+    oracle = [&classifier](const Vec3& p) {
+      classifier.Perform(gp_Pnt(p[0], p[1], p[2]), 1e-9);
+      return classifier.State() == TopAbs_IN;
+    };
+  const SampleSet& samples = run.triangulated.sampled.samples;
+  run.medial = computeCadMedial(*run.triangulated.triangulation, samples, *run.triangulated.prepared, params, oracle);
+  run.secondsAxis = secondsSince(start);
+  if (pairMesh) {
+    call(stage, "pair_mesh");
+    run.pairMesh = buildPairMeshStage(*run.triangulated.triangulation, samples, solid, run.medial);
+  }
+  return run;
+}
+
+bool pairMeshValid(const SolidResult& run) { return run.pairMesh->report.value("valid", false); }
+std::size_t pairMeshInverted(const SolidResult& run) { return run.pairMesh->report.value("inverted", std::size_t{0}); }
+
+}  // namespace
+
+SolidResult runSolid(const TopoDS_Shape& solid, const SamplingParams& sampling, const MedialParams& params,
+                  bool withOracle, bool pairMesh, const std::function<void(const char*)>& stage) {
+  SolidResult best = attempt(solid, sampling, params, withOracle, pairMesh, stage);
+  if (!pairMesh) return best;
+  const double spacing = best.triangulated.sampled.samples.spacing;  // the one asked, or the automatic one
+  nlohmann::json attempts = nlohmann::json::array();
+  auto record = [&attempts](const SolidResult& run, double factor) {
+    const nlohmann::json& r = run.pairMesh->report;
+    attempts.push_back({{"spacing", run.triangulated.sampled.samples.spacing},
+                        {"spacing_factor", factor},
+                        {"samples", run.triangulated.sampled.samples.size()},
+                        {"inverted", r.value("inverted", std::size_t{0})},
+                        {"valid", r.value("valid", false)}});
+  };
+  record(best, kPairMeshResampleFactors[0]);
+  std::size_t kept = 0;
+  for (std::size_t k = 1; k < std::size(kPairMeshResampleFactors) && !pairMeshValid(best); ++k) {
+    SamplingParams finer = sampling;
+    finer.spacing = kPairMeshResampleFactors[k] * spacing;
+    SolidResult next = attempt(solid, finer, params, withOracle, pairMesh, stage);
+    record(next, kPairMeshResampleFactors[k]);
+    // Valid beats not valid; among not valid ones, fewer inverted (the
+    // first on a tie: the spacing asked).
+    if (pairMeshValid(next) || pairMeshInverted(next) < pairMeshInverted(best)) {
+      best = std::move(next);
+      kept = k;
+    }
+  }
+  for (std::size_t k = 0; k < attempts.size(); ++k) attempts[k]["kept"] = k == kept;
+  best.pairMesh->report["attempts"] = std::move(attempts);
+  return best;
+}
+
+}  // namespace cadmedial
