@@ -25,10 +25,10 @@ int main(int argc, char** argv) {
   sampleCmd->add_option("--spacing", sample.spacing, "Target sample spacing h in model units (default: diagonal/40)")
       ->check(CLI::PositiveNumber);
   const char* gradedSpacingHelp =
-      "Grade the sample spacing within each face (fine only where curvature or a thin wall needs it, e.g. at a "
-      "cone's apex) instead of one minimum per face; off by default while the pair-mesh repair is sensitive to it "
-      "(ARCHITECTURE.md)";
-  sampleCmd->add_flag("--graded-spacing", sample.gradedSpacing, gradedSpacingHelp);
+      "The sample spacing is graded within each face, fine only where curvature or a thin wall needs it (e.g. at a "
+      "cone's apex): the default. --uniform-spacing samples each face at one spacing, the finest it needs anywhere "
+      "(the behaviour before 2026-12-02)";
+  sampleCmd->add_flag("--graded-spacing,!--uniform-spacing", sample.gradedSpacing, gradedSpacingHelp);
 
   RunCommandOptions run;
   CLI::App* runCmd = app.add_subcommand(
@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
   runCmd->add_option("-o,--output", run.outDir, "Output directory")->required();
   runCmd->add_option("--spacing", run.spacing, "Target sample spacing h in model units (default: diagonal/40)")
       ->check(CLI::PositiveNumber);
-  runCmd->add_flag("--graded-spacing", run.gradedSpacing, gradedSpacingHelp);
+  runCmd->add_flag("--graded-spacing,!--uniform-spacing", run.gradedSpacing, gradedSpacingHelp);
   runCmd->add_option("--theta", run.params.thetaDeg,
                      "Angle condition threshold in degrees (default 5; 22.5 = pi/8 for point clouds and meshes)")
       ->check(CLI::Range(0.0, 89.0));
@@ -77,7 +77,8 @@ int main(int argc, char** argv) {
   batchCmd->add_flag("--eval", batch.eval, "Also run `cadmedial eval` on each file's outputs");
   // Passed on to `cadmedial run` as given.
   batchCmd->add_option("--spacing", "As for run")->check(CLI::PositiveNumber);
-  batchCmd->add_flag("--graded-spacing", "As for run");
+  batchCmd->add_flag("--graded-spacing", "As for run (the default)");
+  batchCmd->add_flag("--uniform-spacing", "As for run");
   batchCmd->add_option("--theta", "As for run")->check(CLI::Range(0.0, 89.0));
   batchCmd->add_option("--rho", "As for run")->check(CLI::PositiveNumber);
   batchCmd->add_flag("--no-oracle", "As for run");
@@ -125,7 +126,7 @@ int main(int argc, char** argv) {
       for (const char* name : {"--spacing", "--theta", "--rho"})
         if (const CLI::Option* o = batchCmd->get_option(name); o->count() > 0)
           batch.runArguments.insert(batch.runArguments.end(), {name, o->as<std::string>()});
-      for (const char* flag : {"--no-oracle", "--pair-mesh", "--graded-spacing"})
+      for (const char* flag : {"--no-oracle", "--pair-mesh", "--graded-spacing", "--uniform-spacing"})
         if (batchCmd->get_option(flag)->count() > 0) batch.runArguments.push_back(flag);
       return runBatchCommand(batch);
     }

@@ -39,6 +39,7 @@ void printResampling(const nlohmann::json& attempts) {
     return std::string(text);
   };
   auto verdict = [](const nlohmann::json& a) {
+    if (a.contains("error")) return "failed: " + a["error"].get<std::string>();
     return a["valid"].get<bool>() ? std::string("valid") : a["inverted"].dump() + " inverted";
   };
   std::string line = "       pair-mesh: not valid at spacing " + spacing(attempts[0]) + " (" + verdict(attempts[0]) +
@@ -46,7 +47,7 @@ void printResampling(const nlohmann::json& attempts) {
   for (std::size_t k = 1; k < attempts.size(); ++k)
     line += std::string(k > 1 ? "," : "") + " " + spacing(attempts[k]) + " (" + verdict(attempts[k]) + ")";
   for (const auto& a : attempts)
-    if (a["kept"].get<bool>()) line += "; kept " + spacing(a);
+    if (a.value("kept", false)) line += "; kept " + spacing(a);
   std::printf("%s\n", line.c_str());
 }
 }  // namespace

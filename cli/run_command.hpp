@@ -11,7 +11,7 @@ struct RunCommandOptions {
   std::string model;
   std::string outDir;
   double spacing = 0;
-  bool gradedSpacing = false;   // SamplingParams::gradedSpacing
+  bool gradedSpacing = true;    // SamplingParams::gradedSpacing
   MedialParams params = MedialParams::cad();
   bool checkWithOracle = true;  // count walk-vs-exact-classifier disagreements
   bool thetaGiven = false;      // else point clouds / meshes use MedialParams::pointCloud()'s θ

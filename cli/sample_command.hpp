@@ -8,7 +8,7 @@ struct SampleCommandOptions {
   std::string model;
   std::string outDir;
   double spacing = 0;
-  bool gradedSpacing = false;  // SamplingParams::gradedSpacing
+  bool gradedSpacing = true;  // SamplingParams::gradedSpacing
   bool quiet = false;
 };
 

@@ -1,8 +1,11 @@
 #include "solid_run.hpp"
 
 #include <chrono>
+#include <optional>
+#include <string>
 
 #include <BRepClass3d_SolidClassifier.hxx>
+#include <Standard_Failure.hxx>
 
 namespace cadmedial {
 
@@ -47,7 +50,20 @@ std::size_t pairMeshInverted(const SolidResult& run) { return run.pairMesh->repo
 
 SolidResult runSolid(const TopoDS_Shape& solid, const SamplingParams& sampling, const MedialParams& params,
                   bool withOracle, bool pairMesh, const std::function<void(const char*)>& stage) {
-  SolidResult best = attempt(solid, sampling, params, withOracle, pairMesh, stage);
+  // A sampling again that fails (memory, OCCT) must not lose the result in
+  // hand; a stop asked through `stage` (the Python module's cancel) must
+  // still stop.
+  bool stopped = false;
+  const std::function<void(const char*)> reportStage = [&](const char* name) {
+    if (!stage) return;
+    try {
+      stage(name);
+    } catch (...) {
+      stopped = true;
+      throw;
+    }
+  };
+  SolidResult best = attempt(solid, sampling, params, withOracle, pairMesh, reportStage);
   if (!pairMesh) return best;
   const double spacing = best.triangulated.sampled.samples.spacing;  // the one asked, or the automatic one
   nlohmann::json attempts = nlohmann::json::array();
@@ -64,7 +80,23 @@ SolidResult runSolid(const TopoDS_Shape& solid, const SamplingParams& sampling, 
   for (std::size_t k = 1; k < std::size(kPairMeshResampleFactors) && !pairMeshValid(best); ++k) {
     SamplingParams finer = sampling;
     finer.spacing = kPairMeshResampleFactors[k] * spacing;
-    SolidResult next = attempt(solid, finer, params, withOracle, pairMesh, stage);
+    SolidResult next;
+    std::optional<std::string> error;
+    try {
+      next = attempt(solid, finer, params, withOracle, pairMesh, reportStage);
+    } catch (const std::exception& e) {
+      if (stopped) throw;
+      error = e.what();
+    } catch (const Standard_Failure& e) {
+      error = std::string("OpenCASCADE: ") + e.GetMessageString();
+    }
+    if (error) {
+      attempts.push_back({{"spacing", finer.spacing},
+                          {"spacing_factor", kPairMeshResampleFactors[k]},
+                          {"error", error->empty() ? std::string("unknown error") : *error},
+                          {"valid", false}});
+      break;
+    }
     record(next, kPairMeshResampleFactors[k]);
     // Valid beats not valid; among not valid ones, fewer inverted (the
     // first on a tie: the spacing asked).

@@ -9,8 +9,9 @@
 // sampled again a little finer (h × 0.97, then h × 0.94) and the first valid
 // result is kept, axis and pair-mesh together (they share the samples); if
 // none is, the one with the fewest inverted elements. Every attempt is
-// reported ("attempts" in the pair-mesh report) and `spacing` in the summary
-// is the one kept.
+// reported ("attempts" in the pair-mesh report; a sampling again that throws
+// is recorded with its "error" and ends the tries, keeping what was in hand)
+// and `spacing` in the summary is the one kept.
 #pragma once
 
 // CGAL (core) headers before OCCT's.

@@ -474,7 +474,7 @@ def compute_points(source, theta=POINT_CLOUD_THETA, rho=8.0, progress=None, canc
 
 
 def compute(source, spacing=0.0, theta=None, rho=8.0, pair_mesh=False, check_inside=True, progress=None, cancel=None,
-            graded_spacing=False):
+            graded_spacing=True):
     """Inner medial axis of every closed solid of `source`; one MedialAxisResult per solid.
     Point clouds and meshes (see point_source) go to compute_points (MEDIAL).
 
@@ -497,10 +497,10 @@ def compute(source, spacing=0.0, theta=None, rho=8.0, pair_mesh=False, check_ins
       "medial", "pair_mesh", "done"); return False to stop (raises Cancelled).
     cancel: a threading.Event (or anything with is_set()); when set, the run
       stops at the next stage boundary with Cancelled.
-    graded_spacing: grade the sample spacing within each face (fine only where
-      curvature or a thin wall needs it; `cadmedial run --graded-spacing`).
-      Off by default while the pair-mesh repair depends on the exact samples
-      (ARCHITECTURE.md, Known gaps).
+    graded_spacing: grade the sample spacing within each face, fine only where
+      curvature or a thin wall needs it (the default); False samples each face
+      at one spacing, the finest it needs anywhere (`cadmedial run
+      --uniform-spacing`, the behaviour before 2026-12-02).
 
     The GIL is released while C++ runs, so this can run in a worker thread.
     Raises InputError (a ValueError) for unreadable input or no closed solid.
@@ -556,7 +556,7 @@ def evaluation_lines(report):
     ]
 
 
-def sample(source, spacing=0.0, progress=None, cancel=None, graded_spacing=False):
+def sample(source, spacing=0.0, progress=None, cancel=None, graded_spacing=True):
     """Boundary samples of every closed solid of `source`; one SampleResult per solid.
     graded_spacing: as for compute()."""
     _check_params(spacing, 5.0, 8.0)

@@ -64,7 +64,8 @@ def icon_path(name):
 
 GRADED_SPACING_DOC = (
     "Grade the sample spacing within each face: finer where it curves or the solid is thin, up to Spacing "
-    "elsewhere (fewer samples on cones, fillets, thin flanges); False = one spacing per face"
+    "elsewhere (fewer samples on cones, fillets, thin flanges); True for new objects. False = one spacing per "
+    "face, the finest it needs anywhere (objects saved before this property keep False)"
 )
 
 _CACHE_SIZE = 16
@@ -785,7 +786,7 @@ def add_to_document(
     check_inside=True,
     results=None,
     recompute=True,
-    graded_spacing=False,
+    graded_spacing=True,
 ):
     """One MedialAxis object (with its sheet objects) per solid of `source`, a
     document object with a shape; returns the MedialAxis objects.

@@ -113,8 +113,12 @@ def validity_lines(mesh):
     ]
     attempts = r.get("attempts") or []
     if len(attempts) > 1:  # not valid at the spacing asked: sampled again finer (cli/solid_run.hpp)
-        tried = ", ".join(f"{a['spacing']:.4g} ({'valid' if a['valid'] else str(a['inverted']) + ' inverted'})"
-                          for a in attempts)
+        def verdict(a):
+            if "error" in a:
+                return "failed: " + a["error"]
+            return "valid" if a["valid"] else f"{a['inverted']} inverted"
+
+        tried = ", ".join(f"{a['spacing']:.4g} ({verdict(a)})" for a in attempts)
         kept = next((a["spacing"] for a in attempts if a.get("kept")), attempts[-1]["spacing"])
         lines.append(f"sampled again: spacings tried {tried}; kept {kept:.4g}")
     return lines
@@ -532,7 +536,7 @@ def add_pair_mesh(doc, source, spacing=None, theta=None, rho=None, solids=None, 
                   graded_spacing=None):
     """One PairMesh object per solid of `source` (a solid object, or a
     MedialAxis object: its source, solid and, unless given, its spacing,
-    theta, rho and graded spacing are used; else 0 = automatic, 5, 8, off); returns them.
+    theta, rho and graded spacing are used; else 0 = automatic, 5, 8, on); returns them.
     solids: solid indices (default: all of a solid object). results: optional
     precomputed api.PairMesh per solid (a GUI computes them in a worker thread
     first) for the same parameters. Raises ValueError for a source without a
@@ -543,7 +547,7 @@ def add_pair_mesh(doc, source, spacing=None, theta=None, rho=None, solids=None, 
     spacing = params.get("spacing", 0.0) if spacing is None else float(spacing)
     theta = params.get("theta", 5.0) if theta is None else float(theta)
     rho = params.get("rho", 8.0) if rho is None else float(rho)
-    graded_spacing = params.get("graded_spacing", False) if graded_spacing is None else bool(graded_spacing)
+    graded_spacing = params.get("graded_spacing", True) if graded_spacing is None else bool(graded_spacing)
     if solids is not None:
         indices = list(solids)
     if results is not None:

@@ -558,7 +558,7 @@ PYBIND11_MODULE(_native, m) {
 
   m.def("compute", &compute, py::arg("source"), py::arg("spacing") = 0.0, py::arg("theta") = 5.0,
         py::arg("rho") = 8.0, py::arg("check_inside") = true, py::arg("progress") = py::none(),
-        py::arg("pair_mesh") = false, py::arg("graded_spacing") = false,
+        py::arg("pair_mesh") = false, py::arg("graded_spacing") = true,
         R"(Inner medial axis of every closed solid in `source` (BREP text or a file name).
 
 Returns a list with one dict per solid: vertices (N x 3), radius (N),
@@ -579,7 +579,7 @@ graded_spacing: grade the sample spacing within each face (as
 `cadmedial run --graded-spacing`; off by default, see ARCHITECTURE.md).
 Raises InputError (a ValueError) for unreadable input or no closed solid.)");
   m.def("sample", &sample, py::arg("source"), py::arg("spacing") = 0.0, py::arg("progress") = py::none(),
-        py::arg("graded_spacing") = false,
+        py::arg("graded_spacing") = true,
         R"(Boundary samples of every closed solid in `source`: points (N x 3), kind (0 face,
 1 edge, 2 vertex), owner, on_convex_edge, nonconcave_corner, triplets (T x 3:
 s, s_left, s_right), triangles (M x 3, the stitched reconstruction),

@@ -23,7 +23,7 @@ struct SamplingContext {
   const std::vector<VertexFeature>& vertexFeatures;
   double spacing = 0;     // global target spacing h
   double minSpacing = 0;  // floor for curvature refinement
-  bool gradedSpacing = false;  // SamplingParams::gradedSpacing
+  bool gradedSpacing = true;  // SamplingParams::gradedSpacing
   std::vector<FaceSpacingField> faceSpacing;  // per face: one value, or graded over its UV box
   std::vector<double> edgeSpacing;   // per edge (target)
   std::vector<double> cornerRadius;  // per vertex: corner-ball radius (0: no ball)

@@ -201,20 +201,20 @@ def main():
           "double-click opens the task panel in edit mode")
     if task_panel.current is not None:
         panel = task_panel.current
-        check(panel.graded.isChecked() is False and panel.graded in panel._inputs(),
-              "the panel shows GradedSpacing (off)")
+        check(panel.graded.isChecked() is True and panel.graded in panel._inputs(),
+              "the panel shows GradedSpacing (on)")
         panel.color_by.setCurrentText("Sheet")
         panel.theta.setValue(6.0)
-        panel.graded.setChecked(True)
+        panel.graded.setChecked(False)
         panel.accept()
         check(wait_until(lambda: task_panel.current is None, 120), "edit run finished")
         wait_until(lambda: False, 0.5)
         check(axis.Theta.Value == 6.0 and axis.ColorBy == "Sheet", "edited parameters stored")
-        check(axis.GradedSpacing and document.get_result(axis).summary.get("graded_spacing") is True,
-              "graded spacing from the panel: stored and computed with")
+        check(not axis.GradedSpacing and document.get_result(axis).summary.get("graded_spacing") is False,
+              "uniform spacing from the panel: stored and computed with")
         check(not ({"Invalid", "Touched"} & set(axis.State)), "edited object up to date")
         axis.ColorBy = "Radius"
-        axis.GradedSpacing = False
+        axis.GradedSpacing = True
         doc.recompute()
 
     Gui.Selection.clearSelection()

@@ -117,17 +117,18 @@ def main():
     doc.recompute()
     check(healthy(axis) and cadmedial.document.get_result(axis).theta == 10.0, "Theta / Rho recompute")
     samples = axis.Samples
-    check(axis.GradedSpacing is False and axis.getDocumentationOfProperty("GradedSpacing"),
-          "GradedSpacing: off by default, with a tooltip")
-    axis.GradedSpacing = True
-    doc.recompute()
-    graded_result = cadmedial.document.get_result(axis)
-    check(healthy(axis) and graded_result.summary["graded_spacing"] is True and axis.InputSignature.endswith("|graded")
-          and axis.Samples != samples, f"GradedSpacing recomputes graded: {samples} -> {axis.Samples} samples")
+    check(axis.GradedSpacing is True and axis.getDocumentationOfProperty("GradedSpacing")
+          and axis.InputSignature.endswith("|graded"), "GradedSpacing: on by default for a new object, with a tooltip")
     axis.GradedSpacing = False
     doc.recompute()
-    check(healthy(axis) and axis.Samples == samples and not axis.InputSignature.endswith("|graded"),
-          "GradedSpacing off again: the uniform result")
+    uniform_result = cadmedial.document.get_result(axis)
+    check(healthy(axis) and uniform_result.summary["graded_spacing"] is False
+          and not axis.InputSignature.endswith("|graded") and axis.Samples != samples,
+          f"GradedSpacing off recomputes with one spacing per face: {samples} -> {axis.Samples} samples")
+    axis.GradedSpacing = True
+    doc.recompute()
+    check(healthy(axis) and axis.Samples == samples and axis.InputSignature.endswith("|graded"),
+          "GradedSpacing on again: the graded result")
     if axis.Sheets > 3:
         axis.MaxSheetObjects = 3
         doc.recompute()

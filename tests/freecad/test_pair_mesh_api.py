@@ -182,6 +182,28 @@ def main():
                                            progress=lambda s, i, n: stop.set() if s == "medial" else None),
                  cadmedial.Cancelled, "cancel", "cancel before the pair-mesh stage")
 
+    # --- sampled again (cli/solid_run.hpp): the lever's graded pair-mesh keeps 2 inverted at
+    # h = diagonal / 40 and is valid at 0.97 h; the stages come again, and a cancel there still stops.
+    lever = os.path.join(source_dir, "..", "shared", "models", "public", "bm2_ec_lever-A.stp")
+    if os.path.exists(lever):
+        stages = []
+        (axis,) = cadmedial.compute(lever, pair_mesh=True, check_inside=False,
+                                    progress=lambda stage, i, n: stages.append(stage))
+        attempts = axis.pair_mesh.report["attempts"]
+        check(stages == ["read"] + ["sample", "medial", "pair_mesh"] * 2 + ["done"], f"lever: stages {stages}")
+        check([a["valid"] for a in attempts] == [False, True] and attempts[1]["kept"]
+              and abs(axis.spacing - 0.97 * attempts[0]["spacing"]) < 1e-9 * axis.spacing and axis.pair_mesh.valid,
+              f"lever: sampled again at 0.97 h and kept, valid: {attempts}")
+        samplings = [0]
+
+        def stop_at_second_sampling(stage, i, n):
+            samplings[0] += stage == "sample"
+            return samplings[0] < 2
+
+        expect_error(lambda: cadmedial.compute(lever, pair_mesh=True, check_inside=False,
+                                               progress=stop_at_second_sampling),
+                     cadmedial.Cancelled, "cancel", "cancel while sampling again")
+
 
 def run():
     try:

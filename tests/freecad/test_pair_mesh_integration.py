@@ -243,14 +243,15 @@ def build_pair_mesh(tmp):
     check(pm.Inverted == 0 and pm.Valid and pm.FemMesh.VolumeCount == pm.Tetrahedra > 0,
           f"child: 0 inverted, valid, FemMesh with {pm.FemMesh.VolumeCount} volumes")
     check(abs(pm.SpacingUsed.Value - axis.SpacingUsed.Value) < 1e-9, "child uses the axis' spacing")
-    axis.GradedSpacing = True
-    doc.recompute()
-    check(pm.GradedSpacing and pm.InputSignature.endswith("|graded") and healthy(pm) and pm.Valid,
-          "child follows the axis' GradedSpacing (recomputed graded, valid)")
-    check(pm.getEditorMode("GradedSpacing") == ["ReadOnly"], "child: GradedSpacing read-only")
+    check(pm.GradedSpacing and pm.InputSignature.endswith("|graded"), "child graded like its axis (the default)")
     axis.GradedSpacing = False
     doc.recompute()
-    check(not pm.GradedSpacing and healthy(pm), "... and back")
+    check(not pm.GradedSpacing and not pm.InputSignature.endswith("|graded") and healthy(pm) and pm.Valid,
+          "child follows the axis' GradedSpacing (recomputed uniform, valid)")
+    check(pm.getEditorMode("GradedSpacing") == ["ReadOnly"], "child: GradedSpacing read-only")
+    axis.GradedSpacing = True
+    doc.recompute()
+    check(pm.GradedSpacing and healthy(pm), "... and back")
     check(pm.getEditorMode("Spacing") == ["ReadOnly"] and pm.getEditorMode("Source") == ["ReadOnly"],
           "child: followed parameters read-only")
     vp = document.ViewProviderMedialAxis.__new__(document.ViewProviderMedialAxis)

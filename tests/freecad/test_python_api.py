@@ -66,22 +66,24 @@ def main():
     check(samples.points.shape[1] == 3 and samples.triangles.shape[1] == 3 and samples.triplets.shape[1] == 3,
           repr(samples))
     check(samples.report["reconstruction"]["surface"]["closed_manifold"], "box reconstruction closed")
-    # Graded spacing reaches the sampler: recorded, and on the lever (public,
-    # when ../shared is there) far fewer samples than one spacing per face.
-    (graded,) = cadmedial.sample(os.path.join(models, "box.step"), graded_spacing=True)
-    check(graded.report["graded_spacing"] is True and samples.report["graded_spacing"] is False,
-          "sample: graded_spacing recorded")
+    # Graded spacing is the default and reaches the sampler: recorded, and on
+    # the lever (public, when ../shared is there) far fewer samples than one
+    # spacing per face (graded_spacing=False).
+    (uniform,) = cadmedial.sample(os.path.join(models, "box.step"), graded_spacing=False)
+    check(samples.report["graded_spacing"] is True and uniform.report["graded_spacing"] is False,
+          "sample: graded by default, graded_spacing recorded")
     try:
         cadmedial.sample(os.path.join(models, "box.step"), graded_spacing="yes")
         check(False, "sample: graded_spacing must be a bool")
     except ValueError as e:
         check("graded_spacing" in str(e), f"sample: graded_spacing must be a bool ({e})")
-    (graded_axis,) = cadmedial.compute(os.path.join(models, "box.step"), graded_spacing=True, check_inside=False)
-    check(graded_axis.summary["graded_spacing"] is True, "compute: graded_spacing recorded in the summary")
+    (uniform_axis,) = cadmedial.compute(os.path.join(models, "box.step"), graded_spacing=False, check_inside=False)
+    check(uniform_axis.summary["graded_spacing"] is False and axis.summary["graded_spacing"] is True,
+          "compute: graded by default, graded_spacing recorded in the summary")
     lever = os.path.join(source_dir, "..", "shared", "models", "public", "bm2_ec_lever-A.stp")
     if os.path.exists(lever):
-        (uniform_lever,) = cadmedial.sample(lever)
-        (graded_lever,) = cadmedial.sample(lever, graded_spacing=True)
+        (uniform_lever,) = cadmedial.sample(lever, graded_spacing=False)
+        (graded_lever,) = cadmedial.sample(lever)
         n_uniform, n_graded = uniform_lever.points.shape[0], graded_lever.points.shape[0]
         check(n_graded < 0.8 * n_uniform, f"lever: {n_graded} samples graded, {n_uniform} with one spacing per face")
     (facts,) = cadmedial.inspect(os.path.join(models, "box.step"))

@@ -183,9 +183,9 @@ TEST(FaceSpacing, StepPlateIsFineOnlyUnderTheThinPart) {
   EXPECT_GT(underThick, 2 * underFlange);
 }
 
-// `cadmedial sample --graded-spacing` reaches the sampler and is recorded;
-// without it a face keeps one spacing (the default while the pair-mesh repair
-// depends on the exact samples), which on the cone is the apex's: ~10 x more.
+// Graded spacing is the default of `cadmedial sample` (and --graded-spacing
+// says so explicitly); --uniform-spacing gives a face one spacing, which on
+// the cone is the apex's: ~10 x more samples.
 TEST(FaceSpacing, CliFlagSwitchesGrading) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cadmedial_test_graded_spacing";
   std::filesystem::remove_all(dir);
@@ -202,8 +202,11 @@ TEST(FaceSpacing, CliFlagSwitchesGrading) {
     const nlohmann::json summary = nlohmann::json::parse(in);
     return summary;
   };
-  const nlohmann::json graded = sample("--graded-spacing"), uniform = sample("");
+  const nlohmann::json graded = sample(""), explicitlyGraded = sample("--graded-spacing"),
+                       uniform = sample("--uniform-spacing");
   const double gradedSamples = graded["samples"]["total"], uniformSamples = uniform["samples"]["total"];
+  EXPECT_TRUE(explicitlyGraded["graded_spacing"].get<bool>());
+  EXPECT_EQ(explicitlyGraded["samples"]["total"].get<double>(), gradedSamples);
   std::printf("cone via the CLI: %g samples graded, %g with one spacing per face\n", gradedSamples, uniformSamples);
   EXPECT_TRUE(graded["graded_spacing"].get<bool>());
   EXPECT_FALSE(uniform["graded_spacing"].get<bool>());

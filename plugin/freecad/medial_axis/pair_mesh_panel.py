@@ -100,7 +100,7 @@ class PairMeshTaskPanel:
     def _params(self, params):
         """Theta / rho / graded spacing of a selected medial axis, else the defaults; the spacing of the panel."""
         return (self.spacing.value(), params.get("theta", 5.0), params.get("rho", 8.0),
-                params.get("graded_spacing", False))
+                params.get("graded_spacing", True))
 
     def accept(self):
         if self.job is not None:

@@ -23,17 +23,18 @@ from . import icon
 current = None
 
 STAGE_TEXT = {"read": "reading", "sample": "sampling", "medial": "medial axis", "pair_mesh": "pair-mesh",
+              "again": "pair-mesh not valid, sampling again finer",
               "prepare": "building the FEM mesh", "done": "done"}
 STAGE_START = {"read": 0.0, "sample": 0.05, "medial": 0.35, "done": 1.0}
 #: With the pair-mesh, the medial stage is shorter than the pair-mesh stage (exact cell labels).
-PAIR_MESH_STAGE_START = {"read": 0.0, "sample": 0.05, "medial": 0.2, "pair_mesh": 0.35, "prepare": 0.7,
-                         "done": 1.0}
+PAIR_MESH_STAGE_START = {"read": 0.0, "sample": 0.05, "medial": 0.2, "pair_mesh": 0.35, "again": 0.5,
+                         "prepare": 0.7, "done": 1.0}
 
 
 class _Job:
     """One run in a worker thread: a list of (label, BREP text) to compute."""
 
-    def __init__(self, items, spacing, theta, rho, check_inside, pair_mesh=False, prepare=None, graded_spacing=False):
+    def __init__(self, items, spacing, theta, rho, check_inside, pair_mesh=False, prepare=None, graded_spacing=True):
         """prepare(result): optional work on each result in the worker thread
         (e.g. building a FEM mesh) so the main thread has less to do."""
         self.items = items
@@ -59,7 +60,14 @@ class _Job:
         try:
             for k, (_label, brep) in enumerate(self.items):
 
-                def progress(stage, solid, solids, k=k):
+                last = {}
+
+                def progress(stage, solid, solids, k=k, last=last):
+                    # After a solid's pair-mesh, its stages come again when it was not
+                    # valid (sampled again finer, cli/solid_run.hpp): one "again" stage.
+                    if stage != "done" and last.get(solid) in ("pair_mesh", "again"):
+                        stage = "again"
+                    last[solid] = stage
                     self.stage = (stage, k)
 
                 start = time.perf_counter()
@@ -151,6 +159,7 @@ class MedialAxisTaskPanel:
 
         self.graded = QtWidgets.QCheckBox("graded within each face")
         self.graded.setToolTip(GRADED_SPACING_DOC)
+        self.graded.setChecked(True)  # the default for new objects
         self.color_by = QtWidgets.QComboBox()
         self.color_by.addItems(["Radius", "Sheet"])
         self.color_by.setToolTip("Colour the sheets by medial radius or give every sheet its own colour")
