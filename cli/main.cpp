@@ -77,8 +77,8 @@ int main(int argc, char** argv) {
   batchCmd->add_flag("--eval", batch.eval, "Also run `cadmedial eval` on each file's outputs");
   // Passed on to `cadmedial run` as given.
   batchCmd->add_option("--spacing", "As for run")->check(CLI::PositiveNumber);
-  batchCmd->add_flag("--graded-spacing", "As for run (the default)");
-  batchCmd->add_flag("--uniform-spacing", "As for run");
+  batchCmd->add_flag("--graded-spacing", "As for run (the default)")
+      ->excludes(batchCmd->add_flag("--uniform-spacing", "As for run"));
   batchCmd->add_option("--theta", "As for run")->check(CLI::Range(0.0, 89.0));
   batchCmd->add_option("--rho", "As for run")->check(CLI::PositiveNumber);
   batchCmd->add_flag("--no-oracle", "As for run");

@@ -40,7 +40,9 @@ void printResampling(const nlohmann::json& attempts) {
   };
   auto verdict = [](const nlohmann::json& a) {
     if (a.contains("error")) return "failed: " + a["error"].get<std::string>();
-    return a["valid"].get<bool>() ? std::string("valid") : a["inverted"].dump() + " inverted";
+    if (a["valid"].get<bool>()) return std::string("valid");
+    const auto inverted = a["inverted"].get<std::size_t>();
+    return inverted > 0 ? std::to_string(inverted) + " inverted" : std::string("not valid");
   };
   std::string line = "       pair-mesh: not valid at spacing " + spacing(attempts[0]) + " (" + verdict(attempts[0]) +
                      "), sampled again at";
@@ -83,7 +85,7 @@ int runRunCommand(const RunCommandOptions& options) {
     MedialParams params = options.params;
     params.computeTopology = false;  // below, while the files are written
     SolidResult run = runSolid(model.solids[i], sampling, params, options.checkWithOracle, options.pairMesh);
-    const SolidSampling& sampled = run.triangulated.sampled;
+    const SolidSampling& sampled = run.sampled;
     MedialResult& medial = run.medial;
 
     t = Clock::now();

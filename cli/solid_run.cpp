@@ -24,7 +24,9 @@ SolidResult attempt(const TopoDS_Shape& solid, const SamplingParams& sampling, c
   SolidResult run;
   call(stage, "sample");
   const auto start = Clock::now();
-  run.triangulated = sampleAndTriangulate(solid, sampling, params.mayReadCellSides());
+  // Local: the triangulation and the prepared samples are freed when this
+  // attempt ends, so a sampling again does not hold two of them at once.
+  TriangulatedSamples triangulated = sampleAndTriangulate(solid, sampling, params.mayReadCellSides());
   call(stage, "medial");
   InsideOracle oracle;
   BRepClass3d_SolidClassifier classifier(solid);
@@ -33,13 +35,15 @@ SolidResult attempt(const TopoDS_Shape& solid, const SamplingParams& sampling, c
       classifier.Perform(gp_Pnt(p[0], p[1], p[2]), 1e-9);
       return classifier.State() == TopAbs_IN;
     };
-  const SampleSet& samples = run.triangulated.sampled.samples;
-  run.medial = computeCadMedial(*run.triangulated.triangulation, samples, *run.triangulated.prepared, params, oracle);
+  const SampleSet& samples = triangulated.sampled.samples;
+  run.medial = computeCadMedial(*triangulated.triangulation, samples, *triangulated.prepared, params, oracle);
   run.secondsAxis = secondsSince(start);
   if (pairMesh) {
     call(stage, "pair_mesh");
-    run.pairMesh = buildPairMeshStage(*run.triangulated.triangulation, samples, solid, run.medial);
+    run.pairMesh = buildPairMeshStage(*triangulated.triangulation, samples, solid, run.medial);
+    run.pairMesh->report["spacing"] = samples.spacing;
   }
+  run.sampled = std::move(triangulated.sampled);
   return run;
 }
 
@@ -65,13 +69,13 @@ SolidResult runSolid(const TopoDS_Shape& solid, const SamplingParams& sampling, 
   };
   SolidResult best = attempt(solid, sampling, params, withOracle, pairMesh, reportStage);
   if (!pairMesh) return best;
-  const double spacing = best.triangulated.sampled.samples.spacing;  // the one asked, or the automatic one
+  const double spacing = best.sampled.samples.spacing;  // the one asked, or the automatic one
   nlohmann::json attempts = nlohmann::json::array();
   auto record = [&attempts](const SolidResult& run, double factor) {
     const nlohmann::json& r = run.pairMesh->report;
-    attempts.push_back({{"spacing", run.triangulated.sampled.samples.spacing},
+    attempts.push_back({{"spacing", run.sampled.samples.spacing},
                         {"spacing_factor", factor},
-                        {"samples", run.triangulated.sampled.samples.size()},
+                        {"samples", run.sampled.samples.size()},
                         {"inverted", r.value("inverted", std::size_t{0})},
                         {"valid", r.value("valid", false)}});
   };
@@ -88,7 +92,11 @@ SolidResult runSolid(const TopoDS_Shape& solid, const SamplingParams& sampling, 
       if (stopped) throw;
       error = e.what();
     } catch (const Standard_Failure& e) {
+      if (stopped) throw;
       error = std::string("OpenCASCADE: ") + e.GetMessageString();
+    } catch (...) {
+      if (stopped) throw;
+      error = "unknown error";
     }
     if (error) {
       attempts.push_back({{"spacing", finer.spacing},

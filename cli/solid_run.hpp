@@ -28,9 +28,9 @@
 namespace cadmedial {
 
 struct SolidResult {
-  TriangulatedSamples triangulated;       // the samples kept and their Delaunay triangulation
+  SolidSampling sampled;                  // the samples kept (their triangulation is freed per attempt)
   MedialResult medial;
-  std::optional<PairMeshStage> pairMesh;  // when asked; its report has "attempts"
+  std::optional<PairMeshStage> pairMesh;  // when asked; its report has "attempts" and "spacing" (the kept one)
   double secondsAxis = 0;                 // wall time from sampling to the axis, of the attempt kept
 };
 

@@ -116,7 +116,9 @@ def validity_lines(mesh):
         def verdict(a):
             if "error" in a:
                 return "failed: " + a["error"]
-            return "valid" if a["valid"] else f"{a['inverted']} inverted"
+            if a["valid"]:
+                return "valid"
+            return f"{a['inverted']} inverted" if a["inverted"] else "not valid"
 
         tried = ", ".join(f"{a['spacing']:.4g} ({verdict(a)})" for a in attempts)
         kept = next((a["spacing"] for a in attempts if a.get("kept")), attempts[-1]["spacing"])

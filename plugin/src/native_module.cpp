@@ -231,7 +231,7 @@ py::list compute(const std::string& source, double spacing, double theta, double
       sp.gradedSpacing = gradedSpacing;
       SolidResult run = runSolid(input.solids[i], sp, params, checkInside, pairMesh,
                               [&](const char* stage) { progress.report(stage, i, n); });
-      runs[i].sampled = std::move(run.triangulated.sampled);
+      runs[i].sampled = std::move(run.sampled);
       runs[i].medial = std::move(run.medial);
       runs[i].secondsAxis = run.secondsAxis;
       runs[i].pairMesh = std::move(run.pairMesh);
@@ -575,8 +575,10 @@ triangulation, with exact inner labels (stage "pair_mesh"); each dict then has
 pair_mesh: nodes (N x 3), node_is_boundary (N), tets (M x 4), types (M; 0
 face-vertex, 1 edge-edge, 2 vertex-face), on_sheets (M), boundary_triangles
 (K x 3) and report (counts, validity, exact volume, repair, seconds).
-graded_spacing: grade the sample spacing within each face (as
-`cadmedial run --graded-spacing`; off by default, see ARCHITECTURE.md).
+A pair-mesh that is not valid makes the solid be sampled again at 0.97 and
+0.94 times the spacing (the stages come again; report["attempts"]).
+graded_spacing: grade the sample spacing within each face (the default;
+False = `cadmedial run --uniform-spacing`, one spacing per face).
 Raises InputError (a ValueError) for unreadable input or no closed solid.)");
   m.def("sample", &sample, py::arg("source"), py::arg("spacing") = 0.0, py::arg("progress") = py::none(),
         py::arg("graded_spacing") = true,

@@ -77,6 +77,13 @@ def main():
     last = pair_document.validity_lines(resampled)[-1]
     check(last == "sampled again: spacings tried 8.93 (1 inverted), 8.662 (1 inverted), 8.394 (valid); kept 8.394",
           f"report line: {last!r}")
+    # Not valid with 0 inverted (an open edge, say), and a sampling again that failed.
+    resampled.report = dict(result.report, attempts=[
+        {"spacing": 8.93, "inverted": 0, "valid": False, "kept": True},
+        {"spacing": 8.6621, "error": "std::bad_alloc", "valid": False, "kept": False}])
+    last = pair_document.validity_lines(resampled)[-1]
+    check(last == "sampled again: spacings tried 8.93 (not valid), 8.662 (failed: std::bad_alloc); kept 8.93",
+          f"report line with a failed attempt: {last!r}")
     check(fem.VolumeCount == pm.Tetrahedra == result.tet_count and fem.TetraCount == pm.Tetrahedra,
           f"FemMesh holds {fem.VolumeCount} volumes = {pm.Tetrahedra} tetrahedra")
     check(fem.NodeCount == pm.Nodes == result.node_count, f"FemMesh holds {fem.NodeCount} nodes")

@@ -45,7 +45,7 @@ ISO_CROSSINGS_ALLOWED = {"bm2_ec_lever-A.stp": 4}
 # 8.4 M tetrahedra, stays out for time) is held to a valid mesh: 0 inverted,
 # no overlap, and an iso-surface at t = 0.5 that does not cut itself (exact
 # arithmetic; the rounded points of the written file may show crossings of
-# sliver cuts, printed).
+# sliver cuts, printed), but for ISO_CROSSINGS_ALLOWED.
 
 
 def public_dev_models():

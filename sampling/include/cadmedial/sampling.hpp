@@ -21,7 +21,7 @@ struct SamplingParams {
   // minimum per face (false: the uniform spacing of before 2026-12-02). On
   // since a pair-mesh left not valid by the repair is sampled again
   // (cli/solid_run.hpp): the same verdicts on every bundled and public dev
-  // model, and a pointed cone gets 10 k samples and the right topology
+  // model but the lever, which is better, and a pointed cone gets 10 k samples and the right topology
   // instead of 115 k and β 13,3 (ARCHITECTURE.md, Spacings).
   bool gradedSpacing = true;
 };
