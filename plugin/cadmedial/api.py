@@ -611,8 +611,8 @@ def _face_min_radius(face):
 def estimate_samples(shape, spacing=0.0):
     """Quick estimate of the sample count of a FreeCAD solid at `spacing`
     (0 = default), from face areas, curvature and edge lengths; no sampling.
-    Follows the spacing rules of sampling/ (curved faces down to 0.2 x radius,
-    never below h/16)."""
+    Follows the uniform spacing rules of sampling/ (curved faces down to 0.2 x
+    radius, never below h/16): an upper bound for the default graded sampling."""
     box = shape.BoundBox
     h = float(spacing) if spacing and spacing > 0 else box.DiagonalLength / 40.0
     if h <= 0:

@@ -33,7 +33,9 @@ for path in sorted(glob.glob(os.path.join(models, "*.step"))):
             api._FACE_DENSITY, api._EDGE_DENSITY = 0.0, 1.0
             edge_term = api.estimate_samples(solid, h) - len(solid.Vertexes)
             t = time.perf_counter()
-            n = len(cadmedial.compute(solid, spacing=h)[0].radius) and cadmedial.sample(solid, spacing=h)[0].points.shape[0]
+            # The estimate models one spacing per face: fit it to uniform sampling.
+            n = len(cadmedial.compute(solid, spacing=h, graded_spacing=False)[0].radius) and \
+                cadmedial.sample(solid, spacing=h, graded_spacing=False)[0].points.shape[0]
             seconds.append(time.perf_counter() - t)
             rows.append([face_term, edge_term])
             counts.append(n - len(solid.Vertexes))

@@ -63,6 +63,7 @@ def parse_args(argv):
     for name in ("--spacing", "--theta", "--rho"):
         p.add_argument(name, type=float, help="as for cadmedial run")
     p.add_argument("--no-oracle", action="store_true", help="as for cadmedial run")
+    p.add_argument("--uniform-spacing", action="store_true", help="as for cadmedial run (one spacing per face)")
     args = p.parse_args(argv)
     for name in ("local", "threads_per_worker", "timeout", "max_memory", "window", "spacing", "rho"):
         value = getattr(args, name)
@@ -80,7 +81,7 @@ def run_arguments(args):
     for name in ("spacing", "theta", "rho"):
         if getattr(args, name) is not None:
             out += ["--" + name, repr(getattr(args, name))]
-    return out + (["--no-oracle"] if args.no_oracle else [])
+    return out + (["--no-oracle"] if args.no_oracle else []) + (["--uniform-spacing"] if args.uniform_spacing else [])
 
 
 def connect(args):
