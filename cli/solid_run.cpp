@@ -71,15 +71,20 @@ SolidResult runSolid(const TopoDS_Shape& solid, const SamplingParams& sampling, 
   if (!pairMesh) return best;
   const double spacing = best.sampled.samples.spacing;  // the one asked, or the automatic one
   nlohmann::json attempts = nlohmann::json::array();
-  auto record = [&attempts](const SolidResult& run, double factor) {
-    const nlohmann::json& r = run.pairMesh->report;
-    attempts.push_back({{"spacing", run.sampled.samples.spacing},
-                        {"spacing_factor", factor},
-                        {"samples", run.sampled.samples.size()},
-                        {"inverted", r.value("inverted", std::size_t{0})},
-                        {"valid", r.value("valid", false)}});
+  // One entry per attempt: its result, or the error that ended the tries.
+  auto record = [&attempts](double spacingTried, double factor, const SolidResult* run, const std::string& error) {
+    nlohmann::json entry = {{"spacing", spacingTried}, {"spacing_factor", factor}};
+    if (run) {
+      entry["samples"] = run->sampled.samples.size();
+      entry["inverted"] = pairMeshInverted(*run);
+      entry["valid"] = pairMeshValid(*run);
+    } else {
+      entry["error"] = error.empty() ? std::string("unknown error") : error;
+      entry["valid"] = false;
+    }
+    attempts.push_back(std::move(entry));
   };
-  record(best, kPairMeshResampleFactors[0]);
+  record(spacing, kPairMeshResampleFactors[0], &best, {});
   std::size_t kept = 0;
   for (std::size_t k = 1; k < std::size(kPairMeshResampleFactors) && !pairMeshValid(best); ++k) {
     SamplingParams finer = sampling;
@@ -99,13 +104,10 @@ SolidResult runSolid(const TopoDS_Shape& solid, const SamplingParams& sampling, 
       error = "unknown error";
     }
     if (error) {
-      attempts.push_back({{"spacing", finer.spacing},
-                          {"spacing_factor", kPairMeshResampleFactors[k]},
-                          {"error", error->empty() ? std::string("unknown error") : *error},
-                          {"valid", false}});
+      record(finer.spacing, kPairMeshResampleFactors[k], nullptr, *error);
       break;
     }
-    record(next, kPairMeshResampleFactors[k]);
+    record(next.sampled.samples.spacing, kPairMeshResampleFactors[k], &next, {});
     // Valid beats not valid; among not valid ones, fewer inverted (the
     // first on a tie: the spacing asked).
     if (pairMeshValid(next) || pairMeshInverted(next) < pairMeshInverted(best)) {

@@ -151,11 +151,6 @@ std::vector<std::size_t> invertedElements(const PairMesh& mesh) {
   return elements;
 }
 
-std::vector<Index> boundaryCellsOfInvertedElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
-                                                   const PairMesh& mesh) {
-  return boundaryCellsOfElements(dv, inner, mesh, invertedElements(mesh));
-}
-
 std::vector<Index> boundaryCellsOfElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
                                            const PairMesh& mesh, const std::vector<std::size_t>& elements,
                                            int rings) {

@@ -11,22 +11,19 @@
 namespace cadmedial {
 
 // The inner cells on the boundary (at least one outer neighbour) whose
-// Voronoi nodes are corners of an inverted element of `mesh`, for the caller
-// to relabel outer: the boundary then runs over their other facets, and the
-// fold their nodes could not leave goes with them. Where that would leave
-// inner cells around one of their edges in two runs (a non-manifold edge:
-// the cells sit across a wedge thinner than the sampling, e.g. a cylinder
-// tangent to a plane), the runs cut off from the widest one (by angle) go
-// too, up to 4 × (cells) + 64 cells in all. A cell with the runs it cut off
-// goes back when one of them would still leave a non-manifold edge.
+// Voronoi nodes are corners of the given elements of `mesh` (indices into
+// mesh.tets, e.g. invertedElements(mesh)), for the caller to relabel outer:
+// the boundary then runs over their other facets, and the fold their nodes
+// could not leave goes with them. `rings` layers of the boundary cells next
+// to them (across a facet) are added first: a fold in a wedge thinner than
+// the sampling (the lever's blade between a plane and a cylinder touching
+// it) can need a patch of the wedge's cells to go, not one. Where that would
+// leave inner cells around one of their edges in two runs (a non-manifold
+// edge: the cells sit across a wedge thinner than the sampling, e.g. a
+// cylinder tangent to a plane), the runs cut off from the widest one (by
+// angle) go too, up to 4 × (cells) + 64 cells in all. A cell with the runs it
+// cut off goes back when one of them would still leave a non-manifold edge.
 // Vertices are not checked. Sorted, each cell once.
-std::vector<Index> boundaryCellsOfInvertedElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
-                                                   const PairMesh& mesh);
-// The same around the given elements only (indices into mesh.tets), with
-// `rings` layers of the boundary cells next to them (across a facet) added
-// before the growth: a fold in a wedge thinner than the sampling (the
-// lever's blade between a plane and a cylinder touching it) can need a patch
-// of the wedge's cells to go, not one.
 std::vector<Index> boundaryCellsOfElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
                                            const PairMesh& mesh, const std::vector<std::size_t>& elements,
                                            int rings = 0);

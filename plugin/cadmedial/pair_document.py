@@ -237,7 +237,6 @@ class PairMeshFeature(FeatureProxy):
                 raise ValueError(f"{obj.Label}: no closed solid in '{obj.Source.Label}'")
             mesh = results[0].pair_mesh
             mesh.report["wall_seconds"] = time.perf_counter() - start
-            mesh.report["spacing"] = results[0].spacing
             remember_result(signature, mesh)
         # Same inputs and the FemMesh already built: nothing to redo (building
         # the FemMesh costs about as much as computing a small pair-mesh).

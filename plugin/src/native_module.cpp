@@ -198,11 +198,8 @@ py::list toList(const std::vector<std::string>& v) {
 // compute / sample
 
 struct SolidRun {
-  SolidSampling sampled;
-  MedialResult medial;
-  std::optional<PairMeshRun> pairMesh;
+  SolidResult result;  // secondsAxis: wall time from sampling to the axis (stages overlap)
   double secondsRead = 0;
-  double secondsAxis = 0;  // wall time from sampling to the axis (stages overlap)
 };
 
 py::list compute(const std::string& source, double spacing, double theta, double rho, bool checkInside,
@@ -229,27 +226,24 @@ py::list compute(const std::string& source, double spacing, double theta, double
       SamplingParams sp;
       sp.spacing = spacing;
       sp.gradedSpacing = gradedSpacing;
-      SolidResult run = runSolid(input.solids[i], sp, params, checkInside, pairMesh,
-                              [&](const char* stage) { progress.report(stage, i, n); });
-      runs[i].sampled = std::move(run.sampled);
-      runs[i].medial = std::move(run.medial);
-      runs[i].secondsAxis = run.secondsAxis;
-      runs[i].pairMesh = std::move(run.pairMesh);
+      runs[i].result = runSolid(input.solids[i], sp, params, checkInside, pairMesh,
+                                [&](const char* stage) { progress.report(stage, i, n); });
     }
     progress.report("done", n, n);
   });
 
   py::list out;
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    const MedialResult& m = runs[i].medial;
-    const SolidSampling& s = runs[i].sampled;
+    const SolidResult& run = runs[i].result;
+    const MedialResult& m = run.medial;
+    const SolidSampling& s = run.sampled;
     nlohmann::json summary = medialSummaryJson(s.report, m, params);
     summary["model"] = input.name;
     summary["solid"] = i;
     summary["spacing"] = s.samples.spacing;
     summary["graded_spacing"] = gradedSpacing;
     summary["seconds"]["read"] = runs[i].secondsRead;
-    const double seconds = runs[i].secondsAxis;
+    const double seconds = run.secondsAxis;
     summary["seconds"]["total"] = seconds;
 
     py::dict d;
@@ -269,9 +263,9 @@ py::list compute(const std::string& source, double spacing, double theta, double
     std::vector<std::string> warnings = input.warnings;
     warnings.insert(warnings.end(), s.report.warnings.begin(), s.report.warnings.end());
     d["warnings"] = toList(warnings);
-    if (runs[i].pairMesh) {
-      d["pair_mesh"] = pairMeshToDict(*runs[i].pairMesh);
-      summary["pair_mesh"] = runs[i].pairMesh->report;
+    if (run.pairMesh) {
+      d["pair_mesh"] = pairMeshToDict(*run.pairMesh);
+      summary["pair_mesh"] = run.pairMesh->report;
     }
     d["summary"] = jsonToPython(summary);
     out.append(d);

@@ -217,7 +217,7 @@ TEST(PairMeshRepairSteps, RelabelledBoundaryCellsKeepEveryEdgeManifold) {
     }
     ASSERT_TRUE(isInverted(m, i)) << i;
     const Index cell = m.nodeCell[t[0]];
-    const std::vector<Index> cells = boundaryCellsOfInvertedElements(dv, inner, m);
+    const std::vector<Index> cells = boundaryCellsOfElements(dv, inner, m, invertedElements(m));
     ++tried;
     std::vector<std::uint8_t> relabelled = inner;
     for (Index c : cells) {
@@ -252,7 +252,7 @@ TEST(PairMeshRepairSteps, RelabellingElementByElementHelpsWhereAllAtOnceDoesNot)
     PairMesh repairedOnly = buildPairMesh(dv, samples, inner, nullptr, false);
     const std::size_t leftByRepair = repairFlippedElements(repairedOnly, dv);
     ASSERT_GT(leftByRepair, 0u) << slope;
-    ASSERT_FALSE(boundaryCellsOfInvertedElements(dv, inner, repairedOnly).empty()) << slope;
+    ASSERT_FALSE(boundaryCellsOfElements(dv, inner, repairedOnly, invertedElements(repairedOnly)).empty()) << slope;
     const PairMesh m = buildPairMesh(dv, samples, inner);
     EXPECT_GT(m.counts.relabelledBoundaryCells, 0u) << slope;
     EXPECT_LT(m.counts.invertedAfterRepair, leftByRepair) << slope;
@@ -330,7 +330,7 @@ TEST(PairMeshRepairSteps, LocalRelabellingEqualsARebuild) {
       std::vector<Index> cells;
     };
     std::vector<Case> cases;
-    if (const auto offered = boundaryCellsOfInvertedElements(dv, full, repaired); !offered.empty())
+    if (const auto offered = boundaryCellsOfElements(dv, full, repaired, invertedElements(repaired)); !offered.empty())
       cases.push_back({&full, offered});
     for (Index stride : {3u, 7u, 50u}) {
       std::vector<Index> every;
