@@ -24,13 +24,21 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 
 namespace {
 
-// `key` identifies equal positions exactly (equal inputs of the same
-// construction); `point(i)` builds iso point i in Kernel.
-template <class Kernel, class Key, class KeyOf, class PointOf>
-IsoSurfaceIntersections check(const IsoSurface& iso, KeyOf keyOf, PointOf pointOf) {
-  using Mesh = CGAL::Surface_mesh<typename Kernel::Point_3>;
+struct Check {
   IsoSurfaceIntersections result;
-  if (iso.triangles.empty()) return result;
+  std::vector<std::size_t> crossingTriangles;  // indices into iso.triangles, each once
+};
+
+// `key` identifies equal positions exactly (equal inputs of the same
+// construction); `point(i)` builds iso point i in Kernel. Only pairs of
+// triangles with checked[k] set are tested (all when `checked` is empty);
+// the others still weld and orient with the rest.
+template <class Kernel, class Key, class KeyOf, class PointOf>
+Check check(const IsoSurface& iso, KeyOf keyOf, PointOf pointOf, const std::vector<std::uint8_t>& checked = {}) {
+  using Mesh = CGAL::Surface_mesh<typename Kernel::Point_3>;
+  Check out;
+  IsoSurfaceIntersections& result = out.result;
+  if (iso.triangles.empty()) return out;
   // Flat elements (cospherical samples give coincident Voronoi nodes) cut
   // into triangles whose corners coincide in space under different indices:
   // weld equal positions, drop triangles that collapse, and drop pairs of
@@ -46,7 +54,8 @@ IsoSurfaceIntersections check(const IsoSurface& iso, KeyOf keyOf, PointOf pointO
   }
   std::map<std::array<std::size_t, 3>, std::vector<std::size_t>> byCorners;  // sorted corners -> faces
   std::vector<std::array<std::size_t, 3>> tris;
-  std::vector<Index> source;  // per kept triangle: its element
+  std::vector<Index> source;           // per kept triangle: its element
+  std::vector<std::size_t> triangleOf;  // per kept triangle: its index in iso.triangles
   for (std::size_t k = 0; k < iso.triangles.size(); ++k) {
     const auto& t = iso.triangles[k];
     const std::array<std::size_t, 3> w{welded[t[0]], welded[t[1]], welded[t[2]]};
@@ -59,6 +68,7 @@ IsoSurfaceIntersections check(const IsoSurface& iso, KeyOf keyOf, PointOf pointO
     byCorners[key].push_back(tris.size());
     tris.push_back(w);
     source.push_back(k < iso.element.size() ? iso.element[k] : kNoIndex);
+    triangleOf.push_back(k);
   }
   auto sameOrientation = [](const std::array<std::size_t, 3>& a, const std::array<std::size_t, 3>& b) {
     for (int r = 0; r < 3; ++r)
@@ -75,45 +85,106 @@ IsoSurfaceIntersections check(const IsoSurface& iso, KeyOf keyOf, PointOf pointO
         }
   std::vector<std::vector<std::size_t>> faces;
   std::vector<Index> faceSource;
+  std::vector<std::size_t> faceTriangle;
   faces.reserve(tris.size());
   for (std::size_t i = 0; i < tris.size(); ++i)
     if (!dropped[i]) {
       faces.push_back({tris[i][0], tris[i][1], tris[i][2]});
       faceSource.push_back(source[i]);
+      faceTriangle.push_back(triangleOf[i]);
     }
-  if (faces.empty()) return result;
+  if (faces.empty()) return out;
   if (!PMP::is_polygon_soup_a_polygon_mesh(faces)) PMP::orient_polygon_soup(points, faces);
   Mesh mesh;
   PMP::polygon_soup_to_polygon_mesh(points, faces, mesh);
   using Face = typename Mesh::Face_index;
-  std::vector<std::pair<Face, Face>> pairs;
-  PMP::self_intersections(mesh, std::back_inserter(pairs));
-  // CGAL reports a degenerate face f as the pair (f, f), and only so.
   // Faces keep the soup's order (polygon_soup_to_polygon_mesh adds them in order).
+  std::vector<Face> range;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    if (checked.empty() || checked[faceTriangle[f]]) range.push_back(Face(static_cast<typename Mesh::size_type>(f)));
+  std::vector<std::pair<Face, Face>> pairs;
+  PMP::self_intersections(range, mesh, std::back_inserter(pairs));
+  // CGAL reports a degenerate face f as the pair (f, f), and only so.
+  std::vector<std::size_t> crossing;
   for (const auto& [f, g] : pairs) {
     ++(f == g ? result.degenerateTriangles : result.intersectingPairs);
-    if (f != g && result.elementPairs.size() < 100)
+    if (f == g) continue;
+    crossing.push_back(faceTriangle[static_cast<std::size_t>(f)]);
+    crossing.push_back(faceTriangle[static_cast<std::size_t>(g)]);
+    if (result.elementPairs.size() < 100)
       result.elementPairs.push_back({faceSource[static_cast<std::size_t>(f)], faceSource[static_cast<std::size_t>(g)]});
   }
-  return result;
+  std::sort(crossing.begin(), crossing.end());
+  crossing.erase(std::unique(crossing.begin(), crossing.end()), crossing.end());
+  out.crossingTriangles = std::move(crossing);
+  return out;
+}
+
+// The triangles of `iso` whose rounded bounding boxes meet the box of a
+// crossing triangle grown by that triangle's own size on every side: where
+// the exact surface has to decide. Empty (= all) when the crossings are too
+// many for a quadratic scan to be cheaper than checking everything.
+std::vector<std::uint8_t> trianglesNear(const IsoSurface& iso, const std::vector<std::size_t>& crossing) {
+  constexpr std::size_t kMaxCrossingTriangles = 256;
+  if (crossing.size() > kMaxCrossingTriangles) return {};
+  auto box = [&](std::size_t k) {
+    std::array<double, 6> b{INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+    for (Index p : iso.triangles[k])
+      for (int a = 0; a < 3; ++a) {
+        b[a] = std::min(b[a], iso.points[p][a]);
+        b[a + 3] = std::max(b[a + 3], iso.points[p][a]);
+      }
+    return b;
+  };
+  std::vector<std::array<double, 6>> grown;
+  for (std::size_t k : crossing) {
+    auto b = box(k);
+    const double size = std::max({b[3] - b[0], b[4] - b[1], b[5] - b[2]});
+    for (int a = 0; a < 3; ++a) {
+      b[a] -= size;
+      b[a + 3] += size;
+    }
+    grown.push_back(b);
+  }
+  std::vector<std::uint8_t> near(iso.triangles.size(), 0);
+  for (std::size_t k = 0; k < iso.triangles.size(); ++k) {
+    const auto b = box(k);
+    for (const auto& g : grown)
+      if (b[0] <= g[3] && g[0] <= b[3] && b[1] <= g[4] && g[1] <= b[4] && b[2] <= g[5] && g[2] <= b[5]) {
+        near[k] = 1;
+        break;
+      }
+  }
+  return near;
 }
 
 }  // namespace
 
 IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso) {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-  IsoSurfaceIntersections r = check<Kernel, Vec3>(
-      iso, [&](std::size_t i) { return iso.points[i]; },
-      [&](std::size_t i) { return Kernel::Point_3(iso.points[i][0], iso.points[i][1], iso.points[i][2]); });
+  IsoSurfaceIntersections r =
+      check<Kernel, Vec3>(
+          iso, [&](std::size_t i) { return iso.points[i]; },
+          [&](std::size_t i) { return Kernel::Point_3(iso.points[i][0], iso.points[i][1], iso.points[i][2]); })
+          .result;
   r.roundedCrossings = r.intersectingPairs;
   return r;
 }
 
 IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso, const PairMesh& mesh) {
   // The rounded points first (fast); only when they show crossings does the
-  // exact surface decide.
-  const IsoSurfaceIntersections rounded = isoSurfaceSelfIntersections(iso);
+  // exact surface decide, and only around them: exact arithmetic on a whole
+  // surface of flat cuts takes minutes (80 s on the bundled thin wall for
+  // 12 rounded crossings, 2026-12-02), and away from the rounded crossings
+  // the rounded points decide, as they do when they show none at all.
+  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const Check roundedCheck = check<Epick, Vec3>(
+      iso, [&](std::size_t i) { return iso.points[i]; },
+      [&](std::size_t i) { return Epick::Point_3(iso.points[i][0], iso.points[i][1], iso.points[i][2]); });
+  IsoSurfaceIntersections rounded = roundedCheck.result;
+  rounded.roundedCrossings = rounded.intersectingPairs;
   if (rounded.intersectingPairs == 0 || iso.pointNodes.size() != iso.points.size()) return rounded;
+  const std::vector<std::uint8_t> near = trianglesNear(iso, roundedCheck.crossingTriangles);
   using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
   using Point = Kernel::Point_3;
   const Kernel::FT t(iso.t), u = Kernel::FT(1) - t;
@@ -133,7 +204,10 @@ IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso, const
         if (v == kNoIndex) return nodePoint(s);
         const Point ps = nodePoint(s), pv = nodePoint(v);
         return Point(u * pv.x() + t * ps.x(), u * pv.y() + t * ps.y(), u * pv.z() + t * ps.z());
-      });
+      },
+      near).result;
+  // Flat triangles are counted over the whole surface, as by the rounded check.
+  exact.degenerateTriangles = rounded.degenerateTriangles;
   exact.roundedCrossings = rounded.intersectingPairs;
   return exact;
 }
