@@ -91,7 +91,9 @@ class MedialAxisResult:
     (P + 1) and ``indices`` (polygon i = indices[offsets[i]:offsets[i+1]]),
     ``sheet`` (P), ``provenance`` (P, see PROVENANCE_NAMES). Numbers:
     ``sheet_count``, ``samples``, ``spacing``, ``beta0``, ``beta1``,
-    ``seconds``; ``warnings``; ``summary`` (the dict of summary.json)."""
+    ``seconds`` (sampling to axis, of the sampling kept); ``warnings``;
+    ``summary`` (the dict of summary.json; its ``seconds["end_to_end"]`` runs
+    from the read to the result, every sampling of a pair-mesh included)."""
 
     ARRAYS = ("vertices", "radius", "offsets", "indices", "sheet", "provenance")
 

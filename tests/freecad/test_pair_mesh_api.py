@@ -186,11 +186,19 @@ def main():
     # h = diagonal / 40 and is valid at 0.97 h; the stages come again, and a cancel there still stops.
     lever = os.path.join(source_dir, "..", "shared", "models", "public", "bm2_ec_lever-A.stp")
     if os.path.exists(lever):
-        stages = []
-        (axis,) = cadmedial.compute(lever, pair_mesh=True, check_inside=False,
-                                    progress=lambda stage, i, n: stages.append(stage))
+        stages, stamps = [], []
+
+        def note_stage(stage, i, n):
+            stages.append(stage)
+            stamps.append(time.perf_counter())
+
+        (axis,) = cadmedial.compute(lever, pair_mesh=True, check_inside=False, progress=note_stage)
         attempts = axis.pair_mesh.report["attempts"]
         check(stages == ["read"] + ["sample", "medial", "pair_mesh"] * 2 + ["done"], f"lever: stages {stages}")
+        # end_to_end counts both samplings (seconds.total is the kept one's axis).
+        seconds = axis.summary["seconds"]
+        check(seconds["end_to_end"] >= stamps[-2] - stamps[1] > seconds["total"],
+              f"lever: end_to_end {seconds} spans both samplings ({stamps[-2] - stamps[1]:.2f} s)")
         check([a["valid"] for a in attempts] == [False, True] and attempts[1]["kept"]
               and abs(axis.spacing - 0.97 * attempts[0]["spacing"]) < 1e-9 * axis.spacing and axis.pair_mesh.valid,
               f"lever: sampled again at 0.97 h and kept, valid: {attempts}")
