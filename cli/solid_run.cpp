@@ -19,14 +19,22 @@ void call(const std::function<void(const char*)>& stage, const char* name) {
 }
 
 // One sampling at `sampling` through the axis and, when asked, the pair-mesh.
+// Stops after sampling (sameSamples) when the samples are `previous`: the
+// rest would come out the same.
 SolidResult attempt(const TopoDS_Shape& solid, const SamplingParams& sampling, const MedialParams& params,
-                 bool withOracle, bool pairMesh, const std::function<void(const char*)>& stage) {
+                 bool withOracle, bool pairMesh, const std::function<void(const char*)>& stage,
+                 const std::vector<Vec3>* previous = nullptr) {
   SolidResult run;
   call(stage, "sample");
   const auto start = Clock::now();
   // Local: the triangulation and the prepared samples are freed when this
   // attempt ends, so a sampling again does not hold two of them at once.
   TriangulatedSamples triangulated = sampleAndTriangulate(solid, sampling, params.mayReadCellSides());
+  if (previous && triangulated.sampled.samples.points == *previous) {
+    run.sameSamples = true;
+    run.sampled = std::move(triangulated.sampled);
+    return run;
+  }
   call(stage, "medial");
   InsideOracle oracle;
   BRepClass3d_SolidClassifier classifier(solid);
@@ -72,27 +80,37 @@ SolidResult runSolid(const TopoDS_Shape& solid, const SamplingParams& sampling, 
   const double spacing = best.sampled.samples.spacing;  // the one asked, or the automatic one
   nlohmann::json attempts = nlohmann::json::array();
   // One entry per attempt: its result, or the error that ended the tries.
-  auto record = [&attempts](double spacingTried, double factor, const SolidResult* run, const std::string& error) {
-    nlohmann::json entry = {{"spacing", spacingTried}, {"spacing_factor", factor}};
+  // every_spacing: the curvature and wall-thickness bounds scaled too.
+  auto record = [&attempts](double spacingTried, double factor, bool everySpacing, const SolidResult* run,
+                            const std::string& error) {
+    nlohmann::json entry = {{"spacing", spacingTried}, {"spacing_factor", factor}, {"every_spacing", everySpacing}};
     if (run) {
       entry["samples"] = run->sampled.samples.size();
-      entry["inverted"] = pairMeshInverted(*run);
-      entry["valid"] = pairMeshValid(*run);
+      if (run->sameSamples) {
+        entry["same_samples"] = true;  // as the attempt before: not run further
+        entry["valid"] = false;
+      } else {
+        entry["inverted"] = pairMeshInverted(*run);
+        entry["valid"] = pairMeshValid(*run);
+      }
     } else {
       entry["error"] = error.empty() ? std::string("unknown error") : error;
       entry["valid"] = false;
     }
     attempts.push_back(std::move(entry));
   };
-  record(spacing, kPairMeshResampleFactors[0], &best, {});
+  record(spacing, 1.0, false, &best, {});
   std::size_t kept = 0;
-  for (std::size_t k = 1; k < std::size(kPairMeshResampleFactors) && !pairMeshValid(best); ++k) {
+  std::vector<Vec3> lastPoints = best.sampled.samples.points;
+  for (std::size_t k = 0; k < std::size(kPairMeshResamples) && !pairMeshValid(best); ++k) {
+    const PairMeshResample& retry = kPairMeshResamples[k];
     SamplingParams finer = sampling;
-    finer.spacing = kPairMeshResampleFactors[k] * spacing;
+    finer.spacing = retry.factor * spacing;
+    if (retry.boundsToo) finer.boundsScale = retry.factor * sampling.boundsScale;
     SolidResult next;
     std::optional<std::string> error;
     try {
-      next = attempt(solid, finer, params, withOracle, pairMesh, reportStage);
+      next = attempt(solid, finer, params, withOracle, pairMesh, reportStage, &lastPoints);
     } catch (const std::exception& e) {
       if (stopped) throw;
       error = e.what();
@@ -104,15 +122,17 @@ SolidResult runSolid(const TopoDS_Shape& solid, const SamplingParams& sampling, 
       error = "unknown error";
     }
     if (error) {
-      record(finer.spacing, kPairMeshResampleFactors[k], nullptr, *error);
+      record(finer.spacing, retry.factor, retry.boundsToo, nullptr, *error);
       break;
     }
-    record(next.sampled.samples.spacing, kPairMeshResampleFactors[k], &next, {});
+    record(next.sampled.samples.spacing, retry.factor, retry.boundsToo, &next, {});
+    if (next.sameSamples) continue;
+    lastPoints = next.sampled.samples.points;
     // Valid beats not valid; among not valid ones, fewer inverted (the
     // first on a tie: the spacing asked).
     if (pairMeshValid(next) || pairMeshInverted(next) < pairMeshInverted(best)) {
       best = std::move(next);
-      kept = k;
+      kept = k + 1;
     }
   }
   for (std::size_t k = 0; k < attempts.size(); ++k) attempts[k]["kept"] = k == kept;

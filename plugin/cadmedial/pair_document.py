@@ -116,11 +116,17 @@ def validity_lines(mesh):
         def verdict(a):
             if "error" in a:
                 return "failed: " + a["error"]
+            if a.get("same_samples"):
+                return "the same samples, not run again"
             if a["valid"]:
                 return "valid"
             return f"{a['inverted']} inverted" if a["inverted"] else "not valid"
 
-        tried = ", ".join(f"{a['spacing']:.4g} ({verdict(a)})" for a in attempts)
+        def spacing(a):
+            every = f" with every spacing x {a['spacing_factor']:.2g}" if a.get("every_spacing") else ""
+            return f"{a['spacing']:.4g}{every}"
+
+        tried = ", ".join(f"{spacing(a)} ({verdict(a)})" for a in attempts)
         kept = next((a["spacing"] for a in attempts if a.get("kept")), attempts[-1]["spacing"])
         lines.append(f"sampled again: spacings tried {tried}; kept {kept:.4g}")
     return lines

@@ -47,14 +47,14 @@ void computeSpacings(SamplingContext& ctx) {
   IntCurvesFace_ShapeIntersector rays;
   rays.Load(topo.solid, 1e-7);
   for (int f = 0; f < topo.faceCount(); ++f)
-    ctx.faceSpacing.emplace_back(topo.face(f), rays, ctx.minSpacing, ctx.spacing, ctx.gradedSpacing);
+    ctx.faceSpacing.emplace_back(topo.face(f), rays, ctx.minSpacing, ctx.spacing, ctx.gradedSpacing, ctx.boundsScale);
 
   // An edge is sampled evenly, at the smallest spacing its own curvature and
   // its faces' fields ask for along it.
   ctx.edgeSpacing.assign(topo.edgeCount(), ctx.spacing);
   for (int e = 0; e < topo.edgeCount(); ++e) {
     if (topo.edgeDegenerate[e]) continue;
-    double s = kCurvatureFraction * edgeMinCurvatureRadius(topo.edge(e));
+    double s = kCurvatureFraction * ctx.boundsScale * edgeMinCurvatureRadius(topo.edge(e));
     BRepAdaptor_Curve curve(topo.edge(e));
     for (int f : topo.edgeFaces[e]) {
       if (f < 0) continue;

@@ -30,8 +30,8 @@ struct Probe {
 class ThicknessProber {
  public:
   ThicknessProber(const TopoDS_Face& face, const BRepAdaptor_Surface& surf, IntCurvesFace_ShapeIntersector& rays,
-                  double floor, double cap)
-      : face_(face), surf_(surf), rays_(rays), inFace_(face, 1e-9), floor_(floor), cap_(cap) {}
+                  double floor, double cap, double fraction)
+      : face_(face), surf_(surf), rays_(rays), inFace_(face, 1e-9), floor_(floor), cap_(cap), fraction_(fraction) {}
 
   // False where (u, v) is off the face, the normal is undefined or no
   // boundary lies behind the point. The probe stands for the UV cell
@@ -51,7 +51,7 @@ class ThicknessProber {
     if (!(thickness < 1e300)) return false;
     const double reach = std::max(surf_.Value(u - du / 2, v - dv / 2).Distance(surf_.Value(u + du / 2, v + dv / 2)),
                                   surf_.Value(u - du / 2, v + dv / 2).Distance(surf_.Value(u + du / 2, v - dv / 2)));
-    out = {p, u, v, std::clamp(FaceSpacingField::kThicknessFraction * thickness, floor_, cap_), reach};
+    out = {p, u, v, std::clamp(fraction_ * thickness, floor_, cap_), reach};
     return true;
   }
 
@@ -61,6 +61,7 @@ class ThicknessProber {
   IntCurvesFace_ShapeIntersector& rays_;
   BRepTopAdaptor_FClass2d inFace_;
   double floor_, cap_;
+  double fraction_;  // of the thickness
 };
 
 // Thickness probes on a 7 × 7 grid (rays cost ~0.1 ms each, so not one per
@@ -106,10 +107,11 @@ double curvatureAt(const BRepAdaptor_Surface& surf, double u, double v, double d
 }  // namespace
 
 FaceSpacingField::FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeIntersector& solidRays, double floor,
-                                   double cap, bool graded) {
+                                   double cap, bool graded, double boundsScale) {
+  const double curvatureFraction = kCurvatureFraction * boundsScale;
   BRepAdaptor_Surface surf(face, true);
   BRepTools::UVBounds(face, u0_, u1_, v0_, v1_);
-  ThicknessProber prober(face, surf, solidRays, floor, cap);
+  ThicknessProber prober(face, surf, solidRays, floor, cap, kThicknessFraction * boundsScale);
   const std::vector<Probe> thickness = thicknessProbes(prober, u0_, u1_, v0_, v1_);
 
   if (!graded) {
@@ -122,7 +124,7 @@ FaceSpacingField::FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeI
         if (!props.IsCurvatureDefined()) continue;
         maxK = std::max({maxK, std::abs(props.MaxCurvature()), std::abs(props.MinCurvature())});
       }
-    double uniform = kCurvatureFraction * (maxK > 0 ? 1.0 / maxK : 1e300);
+    double uniform = curvatureFraction * (maxK > 0 ? 1.0 / maxK : 1e300);
     for (const Probe& p : thickness) uniform = std::min(uniform, p.spacing);
     cells_.assign(kCells * kCells, std::clamp(uniform, floor, cap));
     minimum_ = maximum_ = cells_.front();
@@ -141,7 +143,7 @@ FaceSpacingField::FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeI
     for (int i = 0; i < nodesPerSide; ++i) {
       const double u = u0_ + (u1_ - u0_) * i / kCells, v = v0_ + (v1_ - v0_) * j / kCells;
       const double k = curvatureAt(surf, u, v, (u1_ - u0_) / kCells, (v1_ - v0_) / kCells, u0_, u1_, v0_, v1_);
-      measured.push_back(k > 0 ? std::clamp(kCurvatureFraction / k, floor, cap) : cap);
+      measured.push_back(k > 0 ? std::clamp(curvatureFraction / k, floor, cap) : cap);
       points.push_back(surf.Value(u, v));
     }
   std::vector<double> node = measured;

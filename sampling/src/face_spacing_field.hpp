@@ -26,8 +26,10 @@ class FaceSpacingField {
   // whole face, the smallest curvature bound on a 9 × 9 grid and the smallest
   // ray probe (the rule before the field; still the default, see
   // SamplingParams::gradedSpacing).
+  // `boundsScale` multiplies the curvature and thickness fractions
+  // (SamplingParams::boundsScale).
   FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeIntersector& solidRays, double floor, double cap,
-                   bool graded);
+                   bool graded, double boundsScale = 1.0);
 
   // The spacing of the grid cell holding (u, v): the smallest value on its
   // corners and probes, so the cell never asks for more than a point in it

@@ -92,6 +92,7 @@ SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& param
   ctx.spacing = params.spacing > 0 ? params.spacing : defaultSpacing(solid);
   ctx.minSpacing = ctx.spacing * params.minSpacingFraction;
   ctx.gradedSpacing = params.gradedSpacing;
+  ctx.boundsScale = params.boundsScale;
   set.spacing = ctx.spacing;
   set.faceCount = topo.faceCount();
   const Bnd_Box box = boundingBox(solid);

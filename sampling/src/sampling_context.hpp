@@ -24,6 +24,7 @@ struct SamplingContext {
   double spacing = 0;     // global target spacing h
   double minSpacing = 0;  // floor for curvature refinement
   bool gradedSpacing = true;  // SamplingParams::gradedSpacing
+  double boundsScale = 1.0;   // SamplingParams::boundsScale
   std::vector<FaceSpacingField> faceSpacing;  // per face: one value, or graded over its UV box
   std::vector<double> edgeSpacing;   // per edge (target)
   std::vector<double> cornerRadius;  // per vertex: corner-ball radius (0: no ball)

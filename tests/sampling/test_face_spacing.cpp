@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <tuple>
 #include <vector>
 
 #include <CGAL/Delaunay_triangulation_3.h>
@@ -22,6 +23,7 @@
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
 #include <GProp_GProps.hxx>
@@ -186,6 +188,34 @@ TEST(FaceSpacing, StepPlateIsFineOnlyUnderTheThinPart) {
 // Graded spacing is the default of `cadmedial sample` (and --graded-spacing
 // says so explicitly); --uniform-spacing gives a face one spacing, which on
 // the cone is the apex's: ~10 x more samples.
+// A pair-mesh that is not valid is sampled again with every spacing × f
+// (cli/solid_run.cpp). On a torus of minor radius 2 the curvature bound
+// (0.15 × 2 = 0.3) sets the spacing everywhere, far below h: scaling h alone
+// gave the same samples (27,009 at h, 0.97 h and 0.94 h, measured
+// 2026-12-02), so the retries could not help. With boundsScale the samples
+// are about 1 / f² as many, graded or not; a thin plate's walls (0.4 ×
+// thickness) follow too.
+TEST(FaceSpacing, BoundsScaleMakesCurvatureAndThicknessSetFacesFiner) {
+  const double f = 0.94;
+  const TopoDS_Shape ring = BRepPrimAPI_MakeTorus(30.0, 2.0).Shape();
+  const TopoDS_Shape plate = BRepPrimAPI_MakeBox(60.0, 60.0, 1.0).Shape();
+  for (const bool graded : {true, false})
+    for (const auto& [name, shape, h] : {std::tuple{"ring", ring, 2.265}, std::tuple{"plate", plate, 2.0}}) {
+      SamplingParams params;
+      params.spacing = h;
+      params.gradedSpacing = graded;
+      const double atH = static_cast<double>(sampleSolid(shape, params).samples.size());
+      params.spacing = f * h;
+      const double hOnly = static_cast<double>(sampleSolid(shape, params).samples.size());
+      params.boundsScale = f;
+      const double finer = static_cast<double>(sampleSolid(shape, params).samples.size());
+      std::printf("%s %s: %g samples at h, %g at %g h, %g with every spacing x %g\n", name,
+                  graded ? "graded" : "uniform", atH, hOnly, f, finer, f);
+      EXPECT_GT(finer, 1.07 * atH) << name << (graded ? " graded" : " uniform");
+      EXPECT_LT(finer, 1.20 * atH) << name << (graded ? " graded" : " uniform");
+    }
+}
+
 TEST(FaceSpacing, CliFlagSwitchesGrading) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cadmedial_test_graded_spacing";
   std::filesystem::remove_all(dir);
