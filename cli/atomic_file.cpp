@@ -29,4 +29,12 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
   }
 }
 
+void createOutputDirectory(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (!ec && !fs::is_directory(dir, ec)) ec = std::make_error_code(std::errc::not_a_directory);
+  if (ec) throw InputError(kExitOutputFailed, "cannot create the output folder " + dir + ": " + ec.message());
+}
+
 }  // namespace cadmedial

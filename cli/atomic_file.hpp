@@ -14,4 +14,10 @@ namespace cadmedial {
 void writeFileAtomically(const std::string& path, const std::function<void(std::ofstream&)>& write,
                          bool binary = false);
 
+// Creates the output folder `dir` and its parents if missing. Throws
+// InputError(kExitOutputFailed) with one line when it cannot (no
+// permission, a file in the way, a read-only file system), so an unwritable
+// -o says so with the documented exit code before any work is done.
+void createOutputDirectory(const std::string& dir);
+
 }  // namespace cadmedial

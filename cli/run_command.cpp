@@ -34,12 +34,18 @@ double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(
 void printResampling(const nlohmann::json& attempts) {
   if (attempts.size() < 2) return;
   auto spacing = [](const nlohmann::json& a) {
-    char text[32];
+    char text[64];
     std::snprintf(text, sizeof text, "%.4g", a["spacing"].get<double>());
-    return std::string(text);
+    std::string s(text);
+    if (a.value("every_spacing", false)) {
+      std::snprintf(text, sizeof text, " with every spacing x %.2g", a["spacing_factor"].get<double>());
+      s += text;
+    }
+    return s;
   };
   auto verdict = [](const nlohmann::json& a) {
     if (a.contains("error")) return "failed: " + a["error"].get<std::string>();
+    if (a.value("same_samples", false)) return std::string("the same samples, not run again");
     if (a["valid"].get<bool>()) return std::string("valid");
     const auto inverted = a["inverted"].get<std::size_t>();
     return inverted > 0 ? std::to_string(inverted) + " inverted" : std::string("not valid");
@@ -73,7 +79,7 @@ int runRunCommand(const RunCommandOptions& options) {
   }
   const double secondsRead = secondsSince(t);
   for (const std::string& w : model.warnings) std::cerr << "warning: " << options.model << ": " << w << "\n";
-  std::filesystem::create_directories(options.outDir);
+  createOutputDirectory(options.outDir);
 
   std::printf("%-6s %8s %9s %9s %8s %7s %6s %6s %9s %8s\n", "solid", "samples", "cells", "polygons", "sheets", "b0/b1",
               "walk", "oracle", "notDelny", "seconds");
@@ -90,7 +96,7 @@ int runRunCommand(const RunCommandOptions& options) {
 
     t = Clock::now();
     const std::string dir = (std::filesystem::path(options.outDir) / ("solid_" + std::to_string(i))).string();
-    std::filesystem::create_directories(dir);
+    createOutputDirectory(dir);
     // Writing is mostly the kernel copying text into files (~1.2 cores busy
     // at 10^6 samples): the Betti numbers for the summary fit beside it.
     double secondsTopology = 0;

@@ -33,7 +33,7 @@ int runPointMedialCommand(const RunCommandOptions& options) {
 
   t = Clock::now();
   const std::string dir = (std::filesystem::path(options.outDir) / "solid_0").string();
-  std::filesystem::create_directories(dir);
+  createOutputDirectory(dir);
   writeMedialFiles(dir, medial);
   const double secondsWrite = secondsSince(t);
 

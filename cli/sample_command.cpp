@@ -16,7 +16,7 @@ namespace cadmedial {
 int runSampleCommand(const SampleCommandOptions& options) {
   const LoadedModel model = loadModel(options.model);
   for (const std::string& w : model.warnings) std::cerr << "warning: " << options.model << ": " << w << "\n";
-  std::filesystem::create_directories(options.outDir);
+  createOutputDirectory(options.outDir);
 
   std::printf("%-8s %9s %9s %7s %7s %8s %6s/%-6s %7s %8s %7s %8s\n", "solid", "samples", "triplets", "convex",
               "concave", "corners", "closed", "euler", "genus", "area%", "vol%", "seconds");
@@ -27,7 +27,7 @@ int runSampleCommand(const SampleCommandOptions& options) {
     const SolidSampling result = sampleSolid(model.solids[i], params);
     const SamplingReport& r = result.report;
     const std::string dir = (std::filesystem::path(options.outDir) / ("solid_" + std::to_string(i))).string();
-    std::filesystem::create_directories(dir);
+    createOutputDirectory(dir);
     writeFileAtomically(dir + "/samples.ply", [&](std::ofstream& out) { writeSamplesPly(out, result.samples); });
     writeFileAtomically(dir + "/boundary.ply", [&](std::ofstream& out) { writeBoundaryMeshPly(out, result.samples); });
     nlohmann::json summary = toJson(r);

@@ -2,6 +2,8 @@
 // one line on stderr and the exit code), never a crash or a partial output.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -132,6 +134,34 @@ TopoDS_Shape hollowedFilletedBox() {
   BRepOffsetAPI_MakeThickSolid thick;
   thick.MakeThickSolidByJoin(rounded, open, -0.6, 1e-4);
   return thick.Shape();
+}
+
+// An output folder that cannot be made (a file in the way of -o, or of its
+// solid_<i> folder) is the documented exit 5 with one line, for `sample` and
+// `run` alike (it was 1, from an uncaught filesystem error, before
+// 2026-12-02), and nothing is computed or written after it.
+TEST_F(BadInputs, UnwritableOutputFolderIsExitCodeFive) {
+  const std::string box = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";
+  const std::string blocker = write("a_file", "in the way\n");
+  fs::create_directories(dir_ / "has_solid_file");
+  const std::string solidAsFile = write("has_solid_file/solid_0", "in the way\n");
+  for (const std::string command : {"sample", "run"})
+    for (const std::string& out : {blocker, blocker + "/sub", (dir_ / "has_solid_file").string()}) {
+      const fs::path errFile = dir_ / "stderr.txt";
+      const std::string cmd = std::string(CADMEDIAL_CLI) + " " + command + " '" + box + "' -o '" + out +
+                              "' >/dev/null 2>'" + errFile.string() + "'";
+      const int status = std::system(cmd.c_str());
+      std::ifstream in(errFile);
+      const std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      ASSERT_TRUE(WIFEXITED(status)) << cmd;
+      EXPECT_EQ(WEXITSTATUS(status), kExitOutputFailed) << cmd << "\n" << err;
+      EXPECT_NE(err.find("cannot create the output folder"), std::string::npos) << err;
+      EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+    }
+  std::ifstream still(solidAsFile);
+  const std::string kept((std::istreambuf_iterator<char>(still)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(kept, "in the way\n");
+  EXPECT_FALSE(fs::exists(dir_ / "has_solid_file" / "summary.json"));
 }
 
 TEST_F(BadInputs, InvalidSolidIsRepairedAndSampled) {
