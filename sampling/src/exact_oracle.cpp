@@ -21,6 +21,7 @@
 #include <Bnd_Box.hxx>
 #include <Extrema_ExtPC.hxx>
 #include <Extrema_ExtPS.hxx>
+#include <GeomAbs_SurfaceType.hxx>
 #include <Extrema_GenLocateExtPS.hxx>
 #include <Poly_Triangulation.hxx>
 #include <Precision.hxx>
@@ -211,8 +212,16 @@ struct FaceSolver {
   Extrema_GenLocateExtPS locate;  // holds a reference to `surface`
   BRepTopAdaptor_FClass2d uvClassifier;
   bool hasSeam = false;
+  // Plane, cylinder, cone, sphere, torus: Extrema_ExtPS solves these in
+  // closed form. On the others (B-spline, Bézier, offset, swept) it searches
+  // a grid at every call, milliseconds each: eval never finished on a box
+  // with variable fillets (21 k samples, > 900 s) or a swept helix.
+  bool analytic = false;
   explicit FaceSolver(const TopoDS_Face& face)
       : surface(face, true), locate(surface), uvClassifier(face, Precision::PConfusion()) {
+    const GeomAbs_SurfaceType type = surface.GetType();
+    analytic = type == GeomAbs_Plane || type == GeomAbs_Cylinder || type == GeomAbs_Cone ||
+               type == GeomAbs_Sphere || type == GeomAbs_Torus;
     for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More() && !hasSeam; ex.Next())
       hasSeam = BRep_Tool::IsClosed(TopoDS::Edge(ex.Current()), face);
     extrema.Initialize(surface, surface.FirstUParameter(), surface.LastUParameter(), surface.FirstVParameter(),
@@ -536,21 +545,33 @@ std::vector<BoundaryPoint> ExactOracle::query(const gp_Pnt& p, double slack, boo
     if (!w.faces[f]) w.faces[f] = std::make_unique<FaceSolver>(s.topo.face(f));
     FaceSolver& fs = *w.faces[f];
     double u, v;
-    fs.extrema.Perform(p);
-    if (fs.extrema.IsDone()) {
-      for (int n = 1; n <= fs.extrema.NbExt(); ++n) {
-        fs.extrema.Point(n).Parameter(u, v);
-        const TopAbs_State state = fs.state(u, v);
-        if (state != TopAbs_OUT) add(fs.extrema.Point(n).Value(), f, -1, -1, fs.smoothPoint(state, u, v), u, v);
-      }
-    }
+    // The Newton projection from the face's mesh foot (within the mesh
+    // deflection of the exact foot) first; the global search only on
+    // analytic faces (cheap), unmeshed ones, or where Newton found no
+    // extremum inside the face.
+    bool newtonFound = false;
     if (s.faceMeshed[f] && s.faceHasUV[f]) {
-      fs.locate.Perform(p, w.faceMeshUV[f].X(), w.faceMeshUV[f].Y(), true);
+      // Analytic faces: the distance minimised within the UV bounds (the
+      // global search has the rest); others: the normal-projection
+      // equations, whose root is an exact extremum when there is one.
+      fs.locate.Perform(p, w.faceMeshUV[f].X(), w.faceMeshUV[f].Y(), fs.analytic);
       if (fs.locate.IsDone()) {
         fs.locate.Point().Parameter(u, v);
         const TopAbs_State state = fs.state(u, v);
-        if (state != TopAbs_OUT && (!nearOnly || fs.critical(p, u, v)))
+        const bool critical = fs.critical(p, u, v);
+        if (state != TopAbs_OUT && (!nearOnly || critical))
           add(fs.locate.Point().Value(), f, -1, -1, fs.smoothPoint(state, u, v), u, v);
+        newtonFound = state == TopAbs_IN && critical;
+      }
+    }
+    if (fs.analytic || !newtonFound) {
+      fs.extrema.Perform(p);
+      if (fs.extrema.IsDone()) {
+        for (int n = 1; n <= fs.extrema.NbExt(); ++n) {
+          fs.extrema.Point(n).Parameter(u, v);
+          const TopAbs_State state = fs.state(u, v);
+          if (state != TopAbs_OUT) add(fs.extrema.Point(n).Value(), f, -1, -1, fs.smoothPoint(state, u, v), u, v);
+        }
       }
     }
     for (int e : s.faceEdges[f]) {

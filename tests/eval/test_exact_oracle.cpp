@@ -9,7 +9,16 @@
 #include <filesystem>
 #include <random>
 
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepOffsetAPI_ThruSections.hxx>
+#include <GC_MakeCircle.hxx>
+#include <TopoDS.hxx>
+#include <gp_Ax2.hxx>
+#include <gp_Circ.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRep_Builder.hxx>
@@ -93,6 +102,30 @@ TEST(ExactOracle, AgreesWithDistShapeShapeOnTorus) { expectAgreesWithDistShapeSh
 TEST(ExactOracle, AgreesWithDistShapeShapeOnFlange) { expectAgreesWithDistShapeShape(modelPath("flange.step"), 150); }
 TEST(ExactOracle, AgreesWithDistShapeShapeOnFilletChamferBlock) {
   expectAgreesWithDistShapeShape(modelPath("fillet_chamfer_block.step"), 150);
+}
+
+// B-spline faces: a loft from a circle (r 20, z 0) to a square turned 45°
+// (side 30, z 40) and to a smaller circle (r 8, z 70). On such faces the
+// oracle takes the Newton projection from the mesh foot and searches the
+// whole face only where that finds no extremum inside it (a global search at
+// every query kept eval busy for over 15 minutes on a part with variable
+// fillets); the distances and sides must still be OCCT's.
+TEST(ExactOracle, AgreesWithDistShapeShapeOnBSplineLoft) {
+  BRepOffsetAPI_ThruSections loft(true, false);
+  loft.AddWire(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(0, 0, 0), gp::DZ()), 20))));
+  BRepBuilderAPI_MakePolygon square;
+  for (int k = 0; k < 4; ++k)
+    square.Add(gp_Pnt(15 * std::sqrt(2.0) * std::cos(M_PI / 2 * k), 15 * std::sqrt(2.0) * std::sin(M_PI / 2 * k), 40));
+  square.Close();
+  loft.AddWire(square.Wire());
+  loft.AddWire(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(0, 0, 70), gp::DZ()), 8))));
+  loft.Build();
+  ASSERT_TRUE(loft.IsDone());
+  int splineFaces = 0;
+  for (TopExp_Explorer ex(loft.Shape(), TopAbs_FACE); ex.More(); ex.Next())
+    splineFaces += BRepAdaptor_Surface(TopoDS::Face(ex.Current())).GetType() == GeomAbs_BSplineSurface;
+  ASSERT_GT(splineFaces, 0);
+  expectAgreesWithOcct(loft.Shape(), "B-spline loft", 300);
 }
 
 // Every closed solid of the public models (first two per file), when present.
