@@ -17,7 +17,8 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
 // Creates the output folder `dir` and its parents if missing. Throws
 // InputError(kExitOutputFailed) with one line when it cannot (no
 // permission, a file in the way, a read-only file system), so an unwritable
-// -o says so with the documented exit code before any work is done.
+// -o says so with the documented exit code (before any work for -o itself;
+// a solid_<i> folder in the way is found when that solid is written).
 void createOutputDirectory(const std::string& dir);
 
 }  // namespace cadmedial

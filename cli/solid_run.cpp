@@ -19,8 +19,9 @@ void call(const std::function<void(const char*)>& stage, const char* name) {
 }
 
 // One sampling at `sampling` through the axis and, when asked, the pair-mesh.
-// Stops after sampling (sameSamples) when the samples are `previous`: the
-// rest would come out the same.
+// Stops after sampling (sameSamples) when the samples are `previous`: only
+// the tolerances that scale with h (welding, near-surface tests) would
+// differ, and the attempt is there to change the samples.
 SolidResult attempt(const TopoDS_Shape& solid, const SamplingParams& sampling, const MedialParams& params,
                  bool withOracle, bool pairMesh, const std::function<void(const char*)>& stage,
                  const std::vector<Vec3>* previous = nullptr) {
@@ -101,7 +102,8 @@ SolidResult runSolid(const TopoDS_Shape& solid, const SamplingParams& sampling, 
   };
   record(spacing, 1.0, false, &best, {});
   std::size_t kept = 0;
-  std::vector<Vec3> lastPoints = best.sampled.samples.points;
+  std::vector<Vec3> lastPoints;
+  if (!pairMeshValid(best)) lastPoints = best.sampled.samples.points;
   for (std::size_t k = 0; k < std::size(kPairMeshResamples) && !pairMeshValid(best); ++k) {
     const PairMeshResample& retry = kPairMeshResamples[k];
     SamplingParams finer = sampling;

@@ -158,18 +158,19 @@ std::vector<std::uint8_t> trianglesNear(const IsoSurface& iso, const std::vector
   return near;
 }
 
+// The check on the rounded (written) points.
+Check roundedCheck(const IsoSurface& iso) {
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  Check c = check<Kernel, Vec3>(
+      iso, [&](std::size_t i) { return iso.points[i]; },
+      [&](std::size_t i) { return Kernel::Point_3(iso.points[i][0], iso.points[i][1], iso.points[i][2]); });
+  c.result.roundedCrossings = c.result.intersectingPairs;
+  return c;
+}
+
 }  // namespace
 
-IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso) {
-  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-  IsoSurfaceIntersections r =
-      check<Kernel, Vec3>(
-          iso, [&](std::size_t i) { return iso.points[i]; },
-          [&](std::size_t i) { return Kernel::Point_3(iso.points[i][0], iso.points[i][1], iso.points[i][2]); })
-          .result;
-  r.roundedCrossings = r.intersectingPairs;
-  return r;
-}
+IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso) { return roundedCheck(iso).result; }
 
 IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso, const PairMesh& mesh) {
   // The rounded points first (fast); only when they show crossings does the
@@ -177,14 +178,9 @@ IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso, const
   // surface of flat cuts takes minutes (80 s on the bundled thin wall for
   // 12 rounded crossings, 2026-12-02), and away from the rounded crossings
   // the rounded points decide, as they do when they show none at all.
-  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-  const Check roundedCheck = check<Epick, Vec3>(
-      iso, [&](std::size_t i) { return iso.points[i]; },
-      [&](std::size_t i) { return Epick::Point_3(iso.points[i][0], iso.points[i][1], iso.points[i][2]); });
-  IsoSurfaceIntersections rounded = roundedCheck.result;
-  rounded.roundedCrossings = rounded.intersectingPairs;
-  if (rounded.intersectingPairs == 0 || iso.pointNodes.size() != iso.points.size()) return rounded;
-  const std::vector<std::uint8_t> near = trianglesNear(iso, roundedCheck.crossingTriangles);
+  const Check rounded = roundedCheck(iso);
+  if (rounded.result.intersectingPairs == 0 || iso.pointNodes.size() != iso.points.size()) return rounded.result;
+  const std::vector<std::uint8_t> near = trianglesNear(iso, rounded.crossingTriangles);
   using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
   using Point = Kernel::Point_3;
   const Kernel::FT t(iso.t), u = Kernel::FT(1) - t;
@@ -207,8 +203,8 @@ IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso, const
       },
       near).result;
   // Flat triangles are counted over the whole surface, as by the rounded check.
-  exact.degenerateTriangles = rounded.degenerateTriangles;
-  exact.roundedCrossings = rounded.intersectingPairs;
+  exact.degenerateTriangles = rounded.result.degenerateTriangles;
+  exact.roundedCrossings = rounded.result.intersectingPairs;
   return exact;
 }
 

@@ -489,8 +489,10 @@ def compute(source, spacing=0.0, theta=None, rho=8.0, pair_mesh=False, check_ins
       B-rep solid: ValueError for point clouds and meshes. Adds the stage
       "pair_mesh" (exact OCCT inner labels, construction, repair, validity).
       A pair-mesh that is not valid at the spacing asked makes the solid be
-      sampled again at 0.97 and 0.94 times it (the stages "sample", "medial",
-      "pair_mesh" come again); the first valid attempt is returned, axis and
+      sampled again at 0.97 times it, then with every spacing 0.94 times (the
+      stages "sample", "medial", "pair_mesh" come again; only "sample" for an
+      attempt that gives the samples of the one before, which stops there);
+      the first valid attempt is returned, axis and
       pair-mesh together (.spacing is the one kept), and
       pair_mesh.report["attempts"] lists every attempt.
     check_inside: count disagreements of the inner/outer walk with OCCT's exact

@@ -127,8 +127,8 @@ def validity_lines(mesh):
             return f"{a['spacing']:.4g}{every}"
 
         tried = ", ".join(f"{spacing(a)} ({verdict(a)})" for a in attempts)
-        kept = next((a["spacing"] for a in attempts if a.get("kept")), attempts[-1]["spacing"])
-        lines.append(f"sampled again: spacings tried {tried}; kept {kept:.4g}")
+        kept = next((a for a in attempts if a.get("kept")), attempts[-1])
+        lines.append(f"sampled again: spacings tried {tried}; kept {spacing(kept)}")
     return lines
 
 

@@ -575,8 +575,9 @@ triangulation, with exact inner labels (stage "pair_mesh"); each dict then has
 pair_mesh: nodes (N x 3), node_is_boundary (N), tets (M x 4), types (M; 0
 face-vertex, 1 edge-edge, 2 vertex-face), on_sheets (M), boundary_triangles
 (K x 3) and report (counts, validity, exact volume, repair, seconds).
-A pair-mesh that is not valid makes the solid be sampled again at 0.97 and
-0.94 times the spacing (the stages come again; report["attempts"]).
+A pair-mesh that is not valid makes the solid be sampled again at 0.97 times
+the spacing, then with every spacing 0.94 times (the stages come again;
+report["attempts"]).
 graded_spacing: grade the sample spacing within each face (the default;
 False = `cadmedial run --uniform-spacing`, one spacing per face).
 Raises InputError (a ValueError) for unreadable input or no closed solid.)");

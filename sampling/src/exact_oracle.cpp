@@ -546,9 +546,11 @@ std::vector<BoundaryPoint> ExactOracle::query(const gp_Pnt& p, double slack, boo
     FaceSolver& fs = *w.faces[f];
     double u, v;
     // The Newton projection from the face's mesh foot (within the mesh
-    // deflection of the exact foot) first; the global search only on
-    // analytic faces (cheap), unmeshed ones, or where Newton found no
-    // extremum inside the face.
+    // deflection of the exact foot) first; the global search on analytic
+    // faces (cheap), unmeshed ones, for near points (every extremum of the
+    // face counts there, e.g. both walls of a U-shaped B-spline face), and
+    // wherever Newton found no local minimum inside the face as near as the
+    // mesh says the face is (Newton can land on a farther extremum).
     bool newtonFound = false;
     if (s.faceMeshed[f] && s.faceHasUV[f]) {
       // Analytic faces: the distance minimised within the UV bounds (the
@@ -561,10 +563,12 @@ std::vector<BoundaryPoint> ExactOracle::query(const gp_Pnt& p, double slack, boo
         const bool critical = fs.critical(p, u, v);
         if (state != TopAbs_OUT && (!nearOnly || critical))
           add(fs.locate.Point().Value(), f, -1, -1, fs.smoothPoint(state, u, v), u, v);
-        newtonFound = state == TopAbs_IN && critical;
+        newtonFound = state == TopAbs_IN && critical &&
+                      std::sqrt(fs.locate.SquareDistance()) <= w.faceMeshDistance[f] + 2 * margin &&
+                      Extrema_GenLocateExtPS::IsMinDist(p, fs.surface, u, v);
       }
     }
-    if (fs.analytic || !newtonFound) {
+    if (fs.analytic || nearOnly || !newtonFound) {
       fs.extrema.Perform(p);
       if (fs.extrema.IsDone()) {
         for (int n = 1; n <= fs.extrema.NbExt(); ++n) {

@@ -403,14 +403,16 @@ EvaluationReport MedialEvaluator::evaluate(const MedialMesh& mesh) const {
     forEach(ids.size(), params.parallel, [&](std::size_t i) {
       const gp_Pnt v = toPnt(mesh.vertices[ids[i]]);
       ExactOracle& oracle = oracles.local();
-      const std::vector<BoundaryPoint> near = oracle.nearPoints(v, p.tolerance);
-      if (near.empty()) return;
       // The distance from closestPoint, not from the near points: those keep
       // only true extrema, and where the nearest points form a circle cut by
       // a trim (a T-pipe's branch axis at the junction) the solvers can
       // return none of them (t_pipe: 19.94 instead of 8.00, an error of 10 %
       // of the diagonal where the vertex was right).
-      error[i] = std::abs(std::min(near.front().distance, oracle.distance(v)) - mesh.radius[ids[i]]) / p.diagonal;
+      double d = oracle.distance(v);
+      const std::vector<BoundaryPoint> near = oracle.nearPoints(v, p.tolerance);
+      if (!near.empty()) d = std::min(d, near.front().distance);
+      error[i] = std::abs(d - mesh.radius[ids[i]]) / p.diagonal;
+      if (near.empty()) return;
       twoContacts[i] = largestContactAngle(v, near) >= minAngle;
     });
     MedialnessMetric& m = rep.medialness;

@@ -167,6 +167,7 @@ TEST(MedialEvaluation, VertexOnABranchAxisAtAJunctionIsMeasuredRight) {
   }
   const EvaluationReport r = evaluateMedial(solid, mesh);
   std::printf("T-pipe branch axis: max |d - r| = %.3g x diagonal\n", r.medialness.max);
+  EXPECT_EQ(r.medialness.vertices, 9u);
   EXPECT_LT(r.medialness.max * r.diagonal, 0.05);
 }
 

@@ -71,12 +71,22 @@ def main():
     import copy
     resampled = copy.copy(result)
     resampled.report = dict(result.report, attempts=[
-        {"spacing": 8.93, "inverted": 1, "valid": False, "kept": False},
-        {"spacing": 8.6621, "inverted": 1, "valid": False, "kept": False},
-        {"spacing": 8.3942, "inverted": 0, "valid": True, "kept": True}])
+        {"spacing": 8.93, "spacing_factor": 1.0, "every_spacing": False, "inverted": 1, "valid": False,
+         "kept": False},
+        {"spacing": 8.6621, "spacing_factor": 0.97, "every_spacing": False, "inverted": 1, "valid": False,
+         "kept": False},
+        {"spacing": 8.3942, "spacing_factor": 0.94, "every_spacing": True, "inverted": 0, "valid": True,
+         "kept": True}])
     last = pair_document.validity_lines(resampled)[-1]
-    check(last == "sampled again: spacings tried 8.93 (1 inverted), 8.662 (1 inverted), 8.394 (valid); kept 8.394",
-          f"report line: {last!r}")
+    check(last == "sampled again: spacings tried 8.93 (1 inverted), 8.662 (1 inverted), 8.394 with every spacing "
+                  "x 0.94 (valid); kept 8.394 with every spacing x 0.94", f"report line: {last!r}")
+    # The same samples as the attempt before (curvature sets every spacing): not run again.
+    resampled.report = dict(result.report, attempts=[
+        {"spacing": 2.265, "spacing_factor": 1.0, "inverted": 1, "valid": False, "kept": True},
+        {"spacing": 2.197, "spacing_factor": 0.97, "same_samples": True, "valid": False, "kept": False}])
+    last = pair_document.validity_lines(resampled)[-1]
+    check(last == "sampled again: spacings tried 2.265 (1 inverted), 2.197 (the same samples, not run again); "
+                  "kept 2.265", f"report line with the same samples: {last!r}")
     # Not valid with 0 inverted (an open edge, say), and a sampling again that failed.
     resampled.report = dict(result.report, attempts=[
         {"spacing": 8.93, "inverted": 0, "valid": False, "kept": True},

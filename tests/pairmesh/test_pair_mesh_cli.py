@@ -216,7 +216,7 @@ class PairMeshCli(unittest.TestCase):
 
     def test_not_valid_at_the_spacing_asked_samples_again_finer(self):
         # The lever at h = 8.93, one spacing per face, keeps 1 inverted
-        # element at its cusp, and at 0.97 h too; at 0.94 h it is valid. The run keeps that one: axis and
+        # element at its cusp, and at 0.97 h too; with every spacing x 0.94 it is valid. The run keeps that one: axis and
         # pair-mesh of the same samples, every attempt in the summary, a line
         # on stdout.
         model = os.path.join(PUBLIC_DIR, "bm2_ec_lever-A.stp")

@@ -185,11 +185,8 @@ TEST(FaceSpacing, StepPlateIsFineOnlyUnderTheThinPart) {
   EXPECT_GT(underThick, 2 * underFlange);
 }
 
-// Graded spacing is the default of `cadmedial sample` (and --graded-spacing
-// says so explicitly); --uniform-spacing gives a face one spacing, which on
-// the cone is the apex's: ~10 x more samples.
-// A pair-mesh that is not valid is sampled again with every spacing × f
-// (cli/solid_run.cpp). On a torus of minor radius 2 the curvature bound
+// A pair-mesh that is not valid is sampled again, the second time with
+// every spacing × f (cli/solid_run.cpp). On a torus of minor radius 2 the curvature bound
 // (0.15 × 2 = 0.3) sets the spacing everywhere, far below h: scaling h alone
 // gave the same samples (27,009 at h, 0.97 h and 0.94 h, measured
 // 2026-12-02), so the retries could not help. With boundsScale the samples
@@ -216,6 +213,9 @@ TEST(FaceSpacing, BoundsScaleMakesCurvatureAndThicknessSetFacesFiner) {
     }
 }
 
+// Graded spacing is the default of `cadmedial sample` (and --graded-spacing
+// says so explicitly); --uniform-spacing gives a face one spacing, which on
+// the cone is the apex's: ~10 x more samples.
 TEST(FaceSpacing, CliFlagSwitchesGrading) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cadmedial_test_graded_spacing";
   std::filesystem::remove_all(dir);

@@ -198,10 +198,13 @@ struct IsoSurfaceIntersections {
 };
 IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso);
 // The same, decided on the exact iso-surface of `mesh` (its points built
-// with exact arithmetic from the nodes, CGAL's Epeck kernel) when the
-// rounded points show crossings: what the pair-mesh defines, free of the
-// rounding of the written coordinates, which near sliver elements alone can
-// make cuts cross (those are counted in roundedCrossings).
+// with exact arithmetic from the nodes, CGAL's Epeck kernel) around the
+// crossings the rounded points show (the triangles within a crossing
+// triangle's size of one; all of them past 256 crossing triangles): what the
+// pair-mesh defines, free of the rounding of the written coordinates, which
+// near sliver elements alone can make cuts cross (those are counted in
+// roundedCrossings). Elsewhere the rounded points decide, as everywhere when
+// they show no crossing; degenerateTriangles is the rounded count.
 IsoSurfaceIntersections isoSurfaceSelfIntersections(const IsoSurface& iso, const PairMesh& mesh);
 
 }  // namespace cadmedial
