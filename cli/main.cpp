@@ -48,6 +48,10 @@ int main(int argc, char** argv) {
   runCmd->add_flag("--keep-topology-artefacts", keepTopologyArtefacts,
                    "Neither close one-facet holes nor drop one-point, forced-only or sub-resolution islands of the inner axis "
                    "(to see the raw Angle/Ratio selection; ARCHITECTURE.md)");
+  bool keepFringe = false;
+  runCmd->add_flag("--keep-fringe", keepFringe,
+                   "Keep the fringe of Voronoi facets around 1-D parts of the axis (fillet centre curves, cylinder "
+                   "axes) instead of collapsing it (ARCHITECTURE.md \"Two contacts\")");
   bool seedAngleTest = false;
   runCmd->add_flag("--seed-angle-test", seedAngleTest,
                    "At concave-edge samples, judge the Angle condition against every umbrella normal, as seed 002 "
@@ -114,6 +118,7 @@ int main(int argc, char** argv) {
       run.checkWithOracle = !noOracle;
       run.thetaGiven = runCmd->get_option("--theta")->count() > 0;
       if (seedAngleTest) run.params.oneSidedConcaveEdges = false;
+      if (keepFringe) run.params.thinFringe = false;
       if (keepTopologyArtefacts) {
         run.params.fillSingleFacetHoles = false;
         run.params.islandRadiusFraction = 0;

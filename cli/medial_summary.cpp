@@ -52,6 +52,7 @@ nlohmann::json medialSummaryJson(const SamplingReport& sampling, const MedialRes
                       {"walk_surface_crossings_refused", c.walkSurfaceCrossingsRefused},
                       {"inner_facets_outside_surface", c.innerFacetsOutsideSurface},
                       {"single_facet_holes_filled", c.singleFacetHolesFilled},
+                      {"fringe_polygons_thinned", c.fringePolygonsThinned},
                       {"sub_resolution_islands", c.subResolutionIslands},
                       {"sub_resolution_island_polygons", c.subResolutionIslandPolygons},
                       {"point_islands_dropped", c.pointIslands},

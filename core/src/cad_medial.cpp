@@ -1,3 +1,4 @@
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 
@@ -89,11 +90,18 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
   watch.restart();
   static_cast<MedialComplex&>(r) = buildInnerComplex(dv, samples, selected, r.forced, r.labels);
   if (params.fillSingleFacetHoles) r.counts.singleFacetHolesFilled = fillSingleFacetHoles(dv, selected, r);
+  const double spacing = samples.spacing > 0 ? samples.spacing : samples.bboxDiagonal() / 40;
+  if (params.thinFringe) {
+    FringeThinningParams fringe;
+    fringe.cosBeta = std::cos(params.fringeBetaDeg * 3.14159265358979323846 / 180.0);
+    fringe.minReach = params.fringeMinReachFraction * spacing;
+    fringe.slack = params.fringeSlackFraction * spacing;
+    r.counts.fringePolygonsThinned = thinFringe(r, samples, fringe);
+  }
   if (params.dropPointIslands)
     r.counts.pointIslands = dropPointIslands(r, 1e-9 * samples.bboxDiagonal(), nullptr);
   if (params.dropForcedOnlyIslands) r.counts.forcedOnlyIslands = dropForcedOnlyIslands(r, nullptr);
   if (params.islandRadiusFraction > 0) {
-    const double spacing = samples.spacing > 0 ? samples.spacing : samples.bboxDiagonal() / 40;
     r.counts.subResolutionIslands =
         dropSubResolutionIslands(r, params.islandRadiusFraction * spacing, &r.counts.subResolutionIslandPolygons);
   }

@@ -62,6 +62,30 @@ MedialComplex buildInnerComplex(const DelaunayVoronoi& dv, const SampleSet& samp
   return mc;
 }
 
+void keepPolygons(MedialComplex& mc, const std::vector<std::uint8_t>& keep) {
+  MedialComplex out;
+  std::vector<Index> newIndex(mc.vertices.size(), kNoIndex);
+  for (std::size_t p = 0; p < mc.polygonCount(); ++p) {
+    if (!keep[p]) continue;
+    for (Index k = mc.polygonOffsets[p]; k < mc.polygonOffsets[p + 1]; ++k) {
+      const Index v = mc.polygonVertices[k];
+      if (newIndex[v] == kNoIndex) {
+        newIndex[v] = static_cast<Index>(out.vertices.size());
+        out.vertices.push_back(mc.vertices[v]);
+        out.radius.push_back(mc.radius[v]);
+        out.vertexCell.push_back(mc.vertexCell[v]);
+        out.vertexSample.push_back(mc.vertexSample[v]);
+      }
+      out.polygonVertices.push_back(newIndex[v]);
+    }
+    out.polygonOffsets.push_back(static_cast<Index>(out.polygonVertices.size()));
+    out.provenance.push_back(mc.provenance[p]);
+    out.provenanceSamples.push_back(mc.provenanceSamples[p]);
+  }
+  out.sheet.assign(out.polygonCount(), kNoIndex);
+  mc = std::move(out);
+}
+
 ComplexEdges buildComplexEdges(const MedialComplex& mc) {
   std::vector<std::array<Index, 2>> sides(mc.polygonVertices.size());
   for (std::size_t p = 0; p < mc.polygonCount(); ++p) {

@@ -51,33 +51,13 @@ std::size_t removeComponents(MedialComplex& mc, const Components& comps, const s
     if (comps.root[v] == static_cast<Index>(v) && dropRoot[v]) ++islands;
   if (islands == 0) return 0;
 
-  // Compact: keep the polygons outside dropped components, renumber vertices.
-  MedialComplex out;
-  out.polygonOffsets = {0};
-  std::vector<Index> newIndex(nv, kNoIndex);
-  for (std::size_t p = 0; p < nf; ++p) {
-    const Index b = mc.polygonOffsets[p], e = mc.polygonOffsets[p + 1];
-    if (dropRoot[comps.root[mc.polygonVertices[b]]]) {
+  std::vector<std::uint8_t> keep(nf, 1);
+  for (std::size_t p = 0; p < nf; ++p)
+    if (dropRoot[comps.root[mc.polygonVertices[mc.polygonOffsets[p]]]]) {
+      keep[p] = 0;
       if (polygonsRemoved) ++*polygonsRemoved;
-      continue;
     }
-    for (Index k = b; k < e; ++k) {
-      const Index v = mc.polygonVertices[k];
-      if (newIndex[v] == kNoIndex) {
-        newIndex[v] = static_cast<Index>(out.vertices.size());
-        out.vertices.push_back(mc.vertices[v]);
-        out.radius.push_back(mc.radius[v]);
-        out.vertexCell.push_back(mc.vertexCell[v]);
-        out.vertexSample.push_back(mc.vertexSample[v]);
-      }
-      out.polygonVertices.push_back(newIndex[v]);
-    }
-    out.polygonOffsets.push_back(static_cast<Index>(out.polygonVertices.size()));
-    out.provenance.push_back(mc.provenance[p]);
-    out.provenanceSamples.push_back(mc.provenanceSamples[p]);
-  }
-  out.sheet.assign(out.polygonCount(), kNoIndex);
-  mc = std::move(out);
+  keepPolygons(mc, keep);
   return islands;
 }
 

@@ -28,8 +28,9 @@ class BallTree {
 
   // Smallest gap |p - c| - r over all balls (+inf without balls); the search
   // stops as soon as a gap <= stopAt is found (then the result is only known
-  // to be <= stopAt).
-  double minGap(const Vec3& p, double stopAt) const {
+  // to be <= stopAt). Balls whose centre is nearer p than skipWithin are
+  // left out (a point's own ball and its near copies).
+  double minGap(const Vec3& p, double stopAt, double skipWithin = -1) const {
     double best = std::numeric_limits<double>::infinity();
     if (nodes_.empty()) return best;
     std::vector<std::pair<double, std::uint32_t>> stack{{bound(nodes_[0], p), 0}};
@@ -40,7 +41,9 @@ class BallTree {
       const Node& node = nodes_[i];
       if (node.left < 0) {
         for (std::uint32_t k = node.begin; k < node.end; ++k) {
-          best = std::min(best, distance(p, balls_[k].centre) - balls_[k].radius);
+          const double d = distance(p, balls_[k].centre);
+          if (d < skipWithin) continue;
+          best = std::min(best, d - balls_[k].radius);
           if (best <= stopAt) return best;
         }
         continue;

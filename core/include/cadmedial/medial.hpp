@@ -48,6 +48,7 @@ struct MedialCounts {
   std::size_t walkSurfaceCrossingsRefused = 0;  // crossings refused: a Voronoi vertex inside the surface
   std::size_t innerFacetsOutsideSurface = 0;    // unreached facets relabelled outer (a vertex outside)
   std::size_t singleFacetHolesFilled = 0;       // unselected facets closing a one-facet hole
+  std::size_t fringePolygonsThinned = 0;        // fringe facets collapsed (thinFringe)
   std::size_t subResolutionIslands = 0;         // components dropped (all radii < islandRadiusFraction h)
   std::size_t subResolutionIslandPolygons = 0;  // their polygons
   std::size_t pointIslands = 0;                 // components dropped that are one point (zero-size facets)

@@ -42,6 +42,18 @@ struct MedialParams {
   // Close one-facet holes of the inner complex: an unselected Voronoi facet
   // whose every vertex and edge is already on it (facet_holes.cpp).
   bool fillSingleFacetHoles = true;
+  // Collapse the fringe of Voronoi facets the Angle condition keeps around
+  // 1-D parts of the axis (fillet centre curves, cylinder and torus axes):
+  // facets of chords on one smooth surface whose free vertices v have their
+  // ball inside another vertex u's, r_u - r_v + s >= cos(fringeBetaDeg) |u - v|
+  // with s = fringeSlackFraction h and |u - v| >= fringeMinReachFraction h.
+  // Homotopy-preserving (fringe_thinning.cpp). Measured: two contacts on a
+  // torus 85.0 -> 99.95 %, on a box with every edge filleted 51 -> 79 %;
+  // slack 0.01 h gave the torus 92 %.
+  bool thinFringe = true;
+  double fringeBetaDeg = 20.0;
+  double fringeSlackFraction = 0.03;
+  double fringeMinReachFraction = 0.02;
   // A connected component of the inner complex whose medial balls all have
   // radius below islandRadiusFraction × h and no forced triangle is dropped
   // (never the component with the most polygons): the axis of a connected

@@ -84,6 +84,23 @@ std::size_t dropPointIslands(MedialComplex& complex, double tolerance, std::size
 // *polygonsRemoved their polygons.
 std::size_t dropForcedOnlyIslands(MedialComplex& complex, std::size_t* polygonsRemoved);
 
+// Keeps the polygons with keep[i] != 0 (in order) and the vertices they use
+// (renumbered); sheets are reset.
+void keepPolygons(MedialComplex& complex, const std::vector<std::uint8_t>& keep);
+
+struct FringeThinningParams {
+  double cosBeta = 0.94;  // u dominates v if r_u - r_v >= cosBeta |u - v| (β ≈ 20°)
+  double slack = 0;       // ... up to slack: r_u - r_v + slack >= cosBeta |u - v|
+  double minReach = 0;    // ... and |u - v| >= minReach (u on a polygon around v)
+};
+
+// Removes, by homotopy-preserving collapses from the complex's free edges,
+// the Voronoi facets of chords on one smooth surface whose free vertices
+// have their ball inside another vertex's ball: the fringe the Angle
+// condition keeps around 1-D parts of the axis (fringe_thinning.cpp).
+// Returns how many polygons were removed. Call before buildComplexEdges.
+std::size_t thinFringe(MedialComplex& complex, const SampleSet& samples, const FringeThinningParams& params);
+
 ComplexEdges buildComplexEdges(const MedialComplex& complex);
 
 // Sheets = maximal sets of polygons connected across edges shared by exactly
