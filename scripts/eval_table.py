@@ -8,7 +8,7 @@ on the bundled models and, with --public, the set=dev public models
 Every row is measured against OCCT's exact B-rep, never against the samples.
 Columns: samples, run seconds (sampling + medial, without the oracle check),
 inside share of the sheet area, median / p90 of |dist - r| as % of the
-bounding-box diagonal, coverage of 20 000 boundary points at tol = 0.5 % of the
+bounding-box diagonal, share of vertices with two contacts ≥ 10° apart, coverage of 20 000 boundary points at tol = 0.5 % of the
 diagonal, convex-edge attachment by length, attached / all non-concave corners,
 β0, β1 of the axis (solid's in brackets) and the verdict (failed checks named).
 """
@@ -61,7 +61,8 @@ def evaluate(exe, model, outdir, run_options):
         m, t, a = e["medialness"], e["topology"], e["attachment"]
         rows.append(
             f"| {name} | {s['counts']['samples']} | {seconds:.2f} | {100 * e['inside']['share']:.2f} | "
-            f"{100 * m['median']:.3f} / {100 * m['p90']:.3f} | {100 * e['coverage']['share']:.2f} | "
+            f"{100 * m['median']:.3f} / {100 * m['p90']:.3f} | {100 * m['two_contact_share']:.2f} | "
+            f"{100 * e['coverage']['share']:.2f} | "
             f"{100 * a['edge_share']:.2f} | {a['attached_corners']}/{a['corners']} | "
             f"{t['medial']['beta0']}, {t['medial']['beta1']} ({t['solid']['beta0']}, {t['solid']['beta1']}) | "
             f"{verdict(e['pass'])} |")
@@ -82,9 +83,9 @@ def main():
     models = [REPO / "models" / f"{m}.step" for m in BUNDLED]
     if args.public:
         models += public_dev_models()
-    print("| model | samples | run s | inside % | \\|d−r\\|/diag % median / p90 | coverage % | "
+    print("| model | samples | run s | inside % | \\|d−r\\|/diag % median / p90 | two contacts % | coverage % | "
           "convex edges % | corners | β0, β1 (solid) | verdict |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
         base = pathlib.Path(args.out or tmp)
         for model in models:

@@ -12,8 +12,9 @@ What the sweep of 2026-12-02 found with them is in ARCHITECTURE.md ("Known
 gaps") and the issue notes: thin_ring needed the third sampling attempt
 (every spacing finer), eval did not finish on box_fillet_variable and
 helix_spring (B-spline search) and misread t_pipe's branch axis (both
-mended); still open: two contacts on box_fillet_all (51 %) and t_pipe
-(85 %), shallow convex edges on loft_circle_square, cone_apex and
+mended); two contacts on box_fillet_all (51 %) and t_pipe (85 %) rose to
+74 % and 95 % with the fringe thinning (box_fillet_all still under 90 %);
+still open: shallow convex edges on loft_circle_square, cone_apex and
 box_fillet_variable, topology of small_step and sharp_wedge.
 """
 import math

@@ -32,13 +32,22 @@
 // The erosion starts at the complex's free edges and stops at undominated
 // vertices and at facets that are not chords of one smooth surface (the
 // facets across a tube, the sheet between two faces), and never cuts the
-// complex apart or opens a loop. Slack makes most vertices dominated (a
-// torus: all but 92 of 32,427), so on a true sheet made of such chords
-// (a smooth blob's axis near its rim, where the two contacts are less
-// than 90° apart) the erosion can trim the part whose balls nest; the
-// eval's coverage measures what that costs (100 % on every part tried).
+// complex apart or opens a loop. What mostly stops it is the candidate
+// rule: with the slack, a vertex that has another vertex within about
+// slack / (cosβ - growth) is dominated even on a true sheet (a torus: all
+// but 92 of 32,427 vertices), so on a true sheet made of such chords (a
+// smooth blob's axis near its rim, where the two contacts are less than
+// 90° apart) the erosion can trim the part whose balls nest. A dominating
+// vertex may itself be removed later, so the removed balls are not
+// guaranteed to lie within slack of a kept one; the eval's coverage
+// measures what that costs (100 % on every part tried, bundled, public and
+// the robustness sweep's). Smooth adjacency is per pair of faces: two faces
+// that meet tangentially somewhere and along a sharp edge elsewhere count
+// as smooth neighbours everywhere (such a sharp edge's sheet ends in
+// forced triangles, which are never removed).
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "cadmedial/ball_tree.hpp"
 #include "cadmedial/polygon_complex.hpp"
@@ -103,7 +112,9 @@ std::vector<std::uint64_t> smoothFacePairs(const SampleSet& s) {
 
 std::size_t thinFringe(MedialComplex& mc, const SampleSet& samples, const FringeThinningParams& params) {
   const std::size_t nf = mc.polygonCount(), nv = mc.vertices.size();
-  if (nf == 0 || !(params.minReach > 0)) return 0;
+  if (!(params.cosBeta > 0 && params.cosBeta <= 1) || !(params.slack >= 0) || !(params.minReach > 0))
+    throw std::invalid_argument("thinFringe: cosBeta must be in (0, 1], slack >= 0 and minReach > 0");
+  if (nf == 0) return 0;
 
   // Which polygons may go: Voronoi facets of a chord on one smooth surface.
   const std::vector<Vec3> normal = sampleNormals(samples);
@@ -184,11 +195,16 @@ std::size_t thinFringe(MedialComplex& mc, const SampleSet& samples, const Fringe
   };
 
   std::vector<Index> queue;
+  std::vector<std::uint8_t> queued(nf, 0);  // a polygon is in the queue at most once
+  auto push = [&](Index p) {
+    if (!queued[p]) queue.push_back(p);
+    queued[p] = 1;
+  };
   for (std::size_t p = 0; p < nf; ++p) {
     if (!candidate[p]) continue;
     for (Index k = mc.polygonOffsets[p]; k < mc.polygonOffsets[p + 1]; ++k)
       if (edgeUse[edges.slotEdge[k]] == 1) {
-        queue.push_back(static_cast<Index>(p));
+        push(static_cast<Index>(p));
         break;
       }
   }
@@ -196,6 +212,7 @@ std::size_t thinFringe(MedialComplex& mc, const SampleSet& samples, const Fringe
   while (!queue.empty()) {
     const Index p = queue.back();
     queue.pop_back();
+    queued[p] = 0;
     if (!alive[p] || !collapsible(p)) continue;
     alive[p] = 0;
     ++removed;
@@ -204,7 +221,7 @@ std::size_t thinFringe(MedialComplex& mc, const SampleSet& samples, const Fringe
       const Index v = mc.polygonVertices[k];
       --vertexUse[v];
       for (Index j = vertexOffsets[v]; j < vertexOffsets[v + 1]; ++j)
-        if (alive[vertexPolygons[j]] && candidate[vertexPolygons[j]]) queue.push_back(vertexPolygons[j]);
+        if (alive[vertexPolygons[j]] && candidate[vertexPolygons[j]]) push(vertexPolygons[j]);
     }
   }
   if (removed > 0) keepPolygons(mc, alive);

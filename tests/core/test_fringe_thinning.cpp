@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "cadmedial/polygon_complex.hpp"
 
@@ -12,14 +13,16 @@ namespace {
 
 // Samples 0-3 on face 0 (the plane z = 0, normal +z), 4-6 on face 1 (the
 // plane z = 5, normal -z): a chord 0-1 lies on one smooth surface, 0-4
-// crosses the solid.
+// crosses the solid. Samples 7-9 are on face 0 too but facing -z (one face
+// wrapping round, like a tube's): 0-7 joins opposite contacts of one face.
 SampleSet twoPlanes() {
   SampleSet s;
-  s.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 5}, {1, 0, 5}, {0, 1, 5}};
+  s.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 5}, {1, 0, 5}, {0, 1, 5},
+              {0, 0, 4}, {1, 0, 4}, {0, 1, 4}};
   s.kind.assign(s.points.size(), SampleKind::Face);
-  s.owner = {0, 0, 0, 0, 1, 1, 1};
-  s.triangles = {{0, 1, 2}, {1, 3, 2}, {4, 6, 5}};
-  s.triangleFace = {0, 0, 1};
+  s.owner = {0, 0, 0, 0, 1, 1, 1, 0, 0, 0};
+  s.triangles = {{0, 1, 2}, {1, 3, 2}, {4, 6, 5}, {7, 9, 8}};
+  s.triangleFace = {0, 0, 1, 0};
   s.spacing = 1;
   return s;
 }
@@ -95,6 +98,10 @@ TEST(FringeThinning, ChordsAcrossTheSolidAndSharpFeaturesAreNotFringe) {
   MedialComplex acrossSolid = coreWithFin(1.0);
   for (std::size_t p = 4; p < acrossSolid.polygonCount(); ++p) acrossSolid.provenanceSamples[p] = {0, 5};
   EXPECT_EQ(thinFringe(acrossSolid, twoPlanes(), defaults()), 0u);
+  // Opposite sides of one face (across a tube): normals more than 90° apart.
+  MedialComplex acrossTube = coreWithFin(1.0);
+  for (std::size_t p = 4; p < acrossTube.polygonCount(); ++p) acrossTube.provenanceSamples[p] = {0, 7};
+  EXPECT_EQ(thinFringe(acrossTube, twoPlanes(), defaults()), 0u);
 
   // The same fin on samples of a sharp edge between the two faces.
   SampleSet s = twoPlanes();
@@ -142,6 +149,31 @@ TEST(FringeThinning, NeverOpensALoopOrCutsTheComplexApart) {
   MedialComplex flat = b.mc;
   for (double& r : flat.radius) r = 10;
   EXPECT_EQ(thinFringe(flat, twoPlanes(), defaults()), 0u);
+
+  // A huge ball at the centre (a vertex of no polygon) dominates every ring
+  // vertex: now only the collapse rule keeps the loop, one ring of quads
+  // whose contact with the rest is two arcs.
+  MedialComplex dominatedRing = b.mc;
+  dominatedRing.vertices.push_back({0, 0, 0});
+  dominatedRing.radius.push_back(1000);
+  dominatedRing.vertexCell.push_back(kNoIndex);
+  dominatedRing.vertexSample.push_back(kNoIndex);
+  const std::size_t removed = thinFringe(dominatedRing, twoPlanes(), defaults());
+  EXPECT_GE(removed, std::size_t(n));
+  EXPECT_LT(removed, std::size_t(2 * n));
+  const ComplexTopology kept = topologyOf(dominatedRing);
+  EXPECT_EQ(kept.beta0, 1);
+  EXPECT_EQ(kept.beta1, 1);
+}
+
+TEST(FringeThinning, RefusesParametersOutOfRange) {
+  MedialComplex mc = coreWithFin(1.0);
+  FringeThinningParams p = defaults();
+  p.minReach = 0;
+  EXPECT_THROW(thinFringe(mc, twoPlanes(), p), std::invalid_argument);
+  p = defaults();
+  p.cosBeta = 0;
+  EXPECT_THROW(thinFringe(mc, twoPlanes(), p), std::invalid_argument);
 }
 
 }  // namespace

@@ -91,14 +91,16 @@ void keepPolygons(MedialComplex& complex, const std::vector<std::uint8_t>& keep)
 struct FringeThinningParams {
   double cosBeta = 0.94;  // u dominates v if r_u - r_v >= cosBeta |u - v| (β ≈ 20°)
   double slack = 0;       // ... up to slack: r_u - r_v + slack >= cosBeta |u - v|
-  double minReach = 0;    // ... and |u - v| >= minReach (u on a polygon around v)
+  double minReach = 0;    // ... and |u - v| >= minReach (u any other vertex); must be > 0
 };
 
 // Removes, by homotopy-preserving collapses from the complex's free edges,
-// the Voronoi facets of chords on one smooth surface whose free vertices
-// have their ball inside another vertex's ball: the fringe the Angle
-// condition keeps around 1-D parts of the axis (fringe_thinning.cpp).
-// Returns how many polygons were removed. Call before buildComplexEdges.
+// the Voronoi facets of chords on one smooth surface whose vanishing
+// vertices, and one end of each free edge, have their ball inside another
+// vertex's ball: the fringe the Angle condition keeps around 1-D parts of
+// the axis (fringe_thinning.cpp). Returns how many polygons were removed;
+// throws std::invalid_argument on parameters out of range. Call before
+// buildComplexEdges.
 std::size_t thinFringe(MedialComplex& complex, const SampleSet& samples, const FringeThinningParams& params);
 
 ComplexEdges buildComplexEdges(const MedialComplex& complex);
