@@ -94,7 +94,7 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
   static_cast<MedialComplex&>(r) = buildInnerComplex(dv, samples, selected, r.forced, r.labels);
   if (params.fillSingleFacetHoles) r.counts.singleFacetHolesFilled = fillSingleFacetHoles(dv, selected, r);
   const double spacing = samples.spacing > 0 ? samples.spacing : samples.bboxDiagonal() / 40;
-  if (params.thinFringe) {
+  if (params.thinFringe && spacing > 0 && r.polygonCount() > 0) {  // no scale on flat or empty input
     FringeThinningParams fringe;
     fringe.cosBeta = std::cos(params.fringeBetaDeg * 3.14159265358979323846 / 180.0);
     fringe.minReach = params.fringeMinReachFraction * spacing;
