@@ -2,8 +2,13 @@
 #include "pair_mesh_stage.hpp"
 #include "eval_command.hpp"
 
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <vector>
 
@@ -114,6 +119,47 @@ void printEvaluationRow(std::FILE* out, const std::string& solid, const Evaluati
                verdictText(r.pass).c_str());
 }
 
+namespace {
+
+// OUTDIR must hold what `run` made of this model: eval would otherwise
+// measure another solid's axis against this one and overwrite its eval.json.
+// `run` records each solid's exact volume and area in summary.json; they
+// must agree to 1e-6 (BRepGProp on the same B-rep gives the same numbers),
+// and OUTDIR must not hold more solids than the model has. Outputs without
+// that record (point-cloud runs, older outputs) are not checked.
+void checkOutputsAreOfThisModel(const EvalCommandOptions& options, const LoadedModel& model) {
+  const std::string extra = solidDir(options.outDir, model.solids.size());
+  if (std::filesystem::exists(extra + "/medial.ply"))
+    throw InputError(kExitUsage, options.outDir + " holds more solids than " + options.model + " (" +
+                                     std::to_string(model.solids.size()) +
+                                     "): give `eval` the model that `run` was given");
+  for (std::size_t i = 0; i < model.solids.size(); ++i) {
+    std::ifstream in(solidDir(options.outDir, i) + "/summary.json");
+    if (!in) continue;
+    const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    const nlohmann::json::json_pointer volumeAt("/sampling/reconstruction/exact_volume"),
+        areaAt("/sampling/reconstruction/exact_area");
+    if (summary.is_discarded() || !summary.contains(volumeAt) || !summary.contains(areaAt) ||
+        !summary.at(volumeAt).is_number() || !summary.at(areaAt).is_number())
+      continue;
+    GProp_GProps volume, area;
+    BRepGProp::VolumeProperties(model.solids[i], volume);
+    BRepGProp::SurfaceProperties(model.solids[i], area);
+    auto differ = [](double a, double b) { return std::abs(a - b) > 1e-6 * std::max(std::abs(a), std::abs(b)); };
+    const double runVolume = summary.at(volumeAt).get<double>(), runArea = summary.at(areaAt).get<double>();
+    if (differ(runVolume, volume.Mass()) || differ(runArea, area.Mass())) {
+      char numbers[160];
+      std::snprintf(numbers, sizeof numbers, "volume %.6g, area %.6g there; %.6g and %.6g here", runVolume, runArea,
+                    volume.Mass(), area.Mass());
+      throw InputError(kExitUsage, solidDir(options.outDir, i) + " was computed from another solid than solid " +
+                                       std::to_string(i) + " of " + options.model + " (" + numbers +
+                                       "): give `eval` the model that `run` was given");
+    }
+  }
+}
+
+}  // namespace
+
 int runEvalCommand(const EvalCommandOptions& options) {
   if (!(options.tolerance > 0 && options.tolerance < 1))
     throw InputError(kExitUsage, "--tolerance must be a fraction of the diagonal in (0, 1)");
@@ -128,6 +174,8 @@ int runEvalCommand(const EvalCommandOptions& options) {
       throw InputError(kExitUnreadableInput, "missing " + plyPaths.back() + " (write it with `cadmedial run " +
                                                  options.model + " -o " + options.outDir + "`)");
   }
+
+  checkOutputsAreOfThisModel(options, model);
 
   EvaluationParams params;
   params.toleranceFraction = options.tolerance;

@@ -51,18 +51,20 @@
 
 #include "cadmedial/ball_tree.hpp"
 #include "cadmedial/polygon_complex.hpp"
+#include "cadmedial/vec3_ops.hpp"
 
 namespace cadmedial {
 
 namespace {
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
+using vec3::cross;
+using vec3::dot;
+using vec3::sub;
 
 // Area-weighted outward normal of each sample's umbrella (unnormalised).
+// Computed here rather than taken from UmbrellaData: its normals are
+// unoriented (the Angle condition uses lines), and the chord rule needs the
+// side (opposite normals across a tube are two contacts, not a chord).
 std::vector<Vec3> sampleNormals(const SampleSet& s) {
   std::vector<Vec3> n(s.size(), Vec3{0, 0, 0});
   for (std::size_t t = 0; t < s.triangles.size(); ++t) {

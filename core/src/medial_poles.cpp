@@ -5,16 +5,15 @@
 #include <cmath>
 
 #include "cadmedial/timer.hpp"
+#include "cadmedial/vec3_ops.hpp"
 
 namespace cadmedial {
 
 namespace {
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
+using vec3::cross;
+using vec3::dot;
+using vec3::sub;
 Vec3 toVec(const DelaunayVoronoi::Point& p) { return {p.x(), p.y(), p.z()}; }
 
 Vec3 normalized(const Vec3& v) {

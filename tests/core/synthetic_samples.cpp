@@ -1,5 +1,7 @@
 #include "synthetic_samples.hpp"
 
+#include "cadmedial/vec3_ops.hpp"
+
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -20,14 +22,12 @@ namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vec3 mul(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+using vec3::add;
+using vec3::cross;
+using vec3::dot;
+using vec3::mul;
+using vec3::norm;
+using vec3::sub;
 Vec3 unit(const Vec3& a) { return mul(a, 1.0 / norm(a)); }
 
 struct FaceFrame {

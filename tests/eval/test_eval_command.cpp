@@ -1,5 +1,6 @@
 // `cadmedial eval` (runEvalCommand): the documented error on a missing
-// medial.ply, and eval.json for the exact box axis.
+// medial.ply or on outputs of another model, and eval.json for the exact box
+// axis.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -76,6 +77,57 @@ TEST(EvalCommand, ExactBoxAxisWritesPassingEvalJson) {
   writeMedialPlyFile(options.outDir + "/solid_0/medial.ply", test::scaledRadii(test::exactBoxAxis(20), 0.9));
   options.quiet = true;
   EXPECT_EQ(runEvalCommand(options), kExitProcessingFailed);
+}
+
+// summary.json as `run` writes it: the exact volume and area of the solid.
+void writeRunSummary(const std::string& solidDir, double volume, double area) {
+  nlohmann::json j;
+  j["sampling"]["reconstruction"]["exact_volume"] = volume;
+  j["sampling"]["reconstruction"]["exact_area"] = area;
+  std::ofstream(solidDir + "/summary.json") << j.dump(2) << "\n";
+}
+
+TEST(EvalCommand, OutputsOfAnotherModelAreRefusedAndEvalJsonIsKept) {
+  EvalCommandOptions options;
+  options.model = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";  // 40 x 30 x 20
+  options.outDir = freshDir("another_model");
+  options.quiet = true;
+  const std::string solid = options.outDir + "/solid_0";
+  std::filesystem::create_directories(solid);
+  writeMedialPlyFile(solid + "/medial.ply", test::exactBoxAxis(20));
+  std::ofstream(solid + "/eval.json") << "{\"kept\": true}\n";
+
+  // Another solid's volume: refused before any evaluation, eval.json untouched.
+  writeRunSummary(solid, 1000.0, 5200.0);
+  try {
+    runEvalCommand(options);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(e.code(), kExitUsage);
+    EXPECT_NE(message.find("another solid"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos);
+  }
+  std::ifstream kept(solid + "/eval.json");
+  EXPECT_EQ(nlohmann::json::parse(kept).value("kept", false), true);
+
+  // More solids in OUTDIR than in the model.
+  writeRunSummary(solid, 24000.0, 5200.0);
+  std::filesystem::create_directories(options.outDir + "/solid_1");
+  writeMedialPlyFile(options.outDir + "/solid_1/medial.ply", test::exactBoxAxis(20));
+  try {
+    runEvalCommand(options);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.code(), kExitUsage);
+    EXPECT_NE(std::string(e.what()).find("more solids"), std::string::npos) << e.what();
+  }
+
+  // The box's own volume and area: evaluated.
+  std::filesystem::remove_all(options.outDir + "/solid_1");
+  EXPECT_EQ(runEvalCommand(options), kExitOk);
+  std::ifstream written(solid + "/eval.json");
+  EXPECT_FALSE(nlohmann::json::parse(written).contains("kept"));
 }
 
 TEST(EvalCommand, BadToleranceIsAUsageError) {
