@@ -19,7 +19,7 @@ struct FileResult {
   FileStatus status = FileStatus::Error;
   int exitCode = -1;        // -1 when the process did not exit by itself
   int signal = 0;           // the signal that ended it, 0 if none
-  std::string step;         // the subcommand that failed ("run", "eval"); empty when ok
+  std::string step;         // what failed ("run", "eval", "stage", "publish"); empty when ok
   std::string message;      // one line: the child's error, or what the batch saw
   double wallSeconds = 0;
   double peakRssMiB = 0;    // largest resident set of the file's processes

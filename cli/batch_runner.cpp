@@ -195,8 +195,22 @@ class BatchRunner {
     job.start = Clock::now();
     job.deadline = job.start + std::chrono::duration_cast<Clock::duration>(
                                    std::chrono::duration<double>(options_.timeoutSeconds));
-    fs::create_directories(stageOf(job));
+    // A staging folder that cannot be made (disk full, a file in the way)
+    // fails this file with the output exit code; the batch goes on.
+    std::error_code ec;
+    fs::create_directories(stageOf(job), ec);
+    if (ec) return recordUnstarted(job, "cannot create " + stageOf(job).string() + ": " + ec.message());
     startStep(job);
+  }
+
+  void recordUnstarted(const Job& job, const std::string& message) {
+    FileResult r;
+    r.path = todo_[job.input].path;
+    r.output = todo_[job.input].output;
+    failPublish(r, message);
+    r.step = "stage";
+    log_.append(toJson(r));
+    progress_.fileDone(r);
   }
 
   void startStep(Job job) {

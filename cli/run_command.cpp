@@ -32,31 +32,8 @@ double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(
 // One line when the pair-mesh was not valid at the spacing asked and the
 // solid was sampled again (solid_run.hpp).
 void printResampling(const nlohmann::json& attempts) {
-  if (attempts.size() < 2) return;
-  auto spacing = [](const nlohmann::json& a) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.4g", a["spacing"].get<double>());
-    std::string s(text);
-    if (a.value("every_spacing", false)) {
-      std::snprintf(text, sizeof text, " with every spacing x %.2g", a["spacing_factor"].get<double>());
-      s += text;
-    }
-    return s;
-  };
-  auto verdict = [](const nlohmann::json& a) {
-    if (a.contains("error")) return "failed: " + a["error"].get<std::string>();
-    if (a.value("same_samples", false)) return std::string("the same samples, not run again");
-    if (a["valid"].get<bool>()) return std::string("valid");
-    const auto inverted = a["inverted"].get<std::size_t>();
-    return inverted > 0 ? std::to_string(inverted) + " inverted" : std::string("not valid");
-  };
-  std::string line = "       pair-mesh: not valid at spacing " + spacing(attempts[0]) + " (" + verdict(attempts[0]) +
-                     "), sampled again at";
-  for (std::size_t k = 1; k < attempts.size(); ++k)
-    line += std::string(k > 1 ? "," : "") + " " + spacing(attempts[k]) + " (" + verdict(attempts[k]) + ")";
-  for (const auto& a : attempts)
-    if (a.value("kept", false)) line += "; kept " + spacing(a);
-  std::printf("%s\n", line.c_str());
+  const std::string line = resamplingLine(attempts);
+  if (!line.empty()) std::printf("       pair-mesh: %s\n", line.c_str());
 }
 }  // namespace
 

@@ -1,6 +1,7 @@
 #include "solid_run.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -140,6 +141,33 @@ SolidResult runSolid(const TopoDS_Shape& solid, const SamplingParams& sampling, 
   for (std::size_t k = 0; k < attempts.size(); ++k) attempts[k]["kept"] = k == kept;
   best.pairMesh->report["attempts"] = std::move(attempts);
   return best;
+}
+
+std::string resamplingLine(const nlohmann::json& attempts) {
+  if (!attempts.is_array() || attempts.size() < 2) return {};
+  auto spacing = [](const nlohmann::json& a) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.4g", a.value("spacing", 0.0));
+    std::string s(text);
+    if (a.value("every_spacing", false)) {
+      std::snprintf(text, sizeof text, " with every spacing x %.2g", a.value("spacing_factor", 0.0));
+      s += text;
+    }
+    return s;
+  };
+  auto verdict = [](const nlohmann::json& a) {
+    if (a.contains("error")) return "failed: " + a["error"].get<std::string>();
+    if (a.value("same_samples", false)) return std::string("the same samples, not run again");
+    if (a.value("valid", false)) return std::string("valid");
+    const auto inverted = a.value("inverted", std::size_t{0});
+    return inverted > 0 ? std::to_string(inverted) + " inverted" : std::string("not valid");
+  };
+  std::string line = "not valid at spacing " + spacing(attempts[0]) + " (" + verdict(attempts[0]) + "), sampled again at";
+  for (std::size_t k = 1; k < attempts.size(); ++k)
+    line += std::string(k > 1 ? "," : "") + " " + spacing(attempts[k]) + " (" + verdict(attempts[k]) + ")";
+  for (const auto& a : attempts)
+    if (a.value("kept", false)) line += "; kept " + spacing(a);
+  return line;
 }
 
 }  // namespace cadmedial

@@ -20,6 +20,9 @@
 
 #include <functional>
 #include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
 
 #include <TopoDS_Shape.hxx>
 
@@ -55,5 +58,11 @@ constexpr PairMeshResample kPairMeshResamples[] = {{0.97, false}, {0.94, true}};
 // disagreements (MedialResult::counts).
 SolidResult runSolid(const TopoDS_Shape& solid, const SamplingParams& sampling, const MedialParams& params,
                   bool withOracle, bool pairMesh, const std::function<void(const char* stage)>& stage = {});
+
+// The attempts of a pair-mesh report ("attempts", above) as one line, e.g.
+// "not valid at spacing 8.93 (1 inverted), sampled again at 8.662 (valid);
+// kept 8.662"; empty when the solid was sampled once. The CLI and the
+// workbench's Report view both print it.
+std::string resamplingLine(const nlohmann::json& attempts);
 
 }  // namespace cadmedial

@@ -5,6 +5,7 @@ with ``exportBrepToString()`` (a FreeCAD ``Part.Shape``) or a ``Shape``
 attribute (a FreeCAD document object).
 """
 
+import json
 import math
 import os
 
@@ -536,6 +537,13 @@ def evaluate(source, result, solid=None, tolerance=0.005):
         to_source(source), index, result.vertices, result.radius, result.offsets, result.indices,
         result.sheet, result.provenance, float(tolerance),
     )
+
+
+def resampling_line(attempts):
+    """A pair-mesh report's "attempts" as one line ("not valid at spacing 8.93
+    (1 inverted), sampled again at 8.662 (valid); kept 8.662"), the line
+    `cadmedial run` prints; "" when the solid was sampled once."""
+    return _native.resampling_line(json.dumps(list(attempts)))
 
 
 def evaluation_lines(report):

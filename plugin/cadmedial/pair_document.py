@@ -113,22 +113,7 @@ def validity_lines(mesh):
     ]
     attempts = r.get("attempts") or []
     if len(attempts) > 1:  # not valid at the spacing asked: sampled again finer (cli/solid_run.hpp)
-        def verdict(a):
-            if "error" in a:
-                return "failed: " + a["error"]
-            if a.get("same_samples"):
-                return "the same samples, not run again"
-            if a["valid"]:
-                return "valid"
-            return f"{a['inverted']} inverted" if a["inverted"] else "not valid"
-
-        def spacing(a):
-            every = f" with every spacing x {a['spacing_factor']:.2g}" if a.get("every_spacing") else ""
-            return f"{a['spacing']:.4g}{every}"
-
-        tried = ", ".join(f"{spacing(a)} ({verdict(a)})" for a in attempts)
-        kept = next((a for a in attempts if a.get("kept")), attempts[-1])
-        lines.append(f"sampled again: spacings tried {tried}; kept {spacing(kept)}")
+        lines.append(api.resampling_line(attempts))
     return lines
 
 

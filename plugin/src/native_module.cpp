@@ -609,6 +609,12 @@ compute() plus axis ("inner" | "whole") and axis_note.)");
         "Points (N x 3) and triangles (M x 3) of a .xyz/.pts/.ply/.stl/.obj/.off file, as `cadmedial run` reads it.");
   m.def("is_point_input", &isPointInputPath, py::arg("path"),
         "True if `cadmedial run` treats this file name as a point cloud or mesh (.xyz .pts .ply .stl .obj .off).");
+  m.def(
+      "resampling_line",
+      [](const std::string& attemptsJson) { return resamplingLine(nlohmann::json::parse(attemptsJson)); },
+      py::arg("attempts_json"),
+      "The pair-mesh report's attempts (a JSON list) as the one line `cadmedial run` prints; empty when the "
+      "solid was sampled once.");
   registerPairMeshFunctions(m);
   m.attr("PAIR_MESH_AVAILABLE") = true;
 }
