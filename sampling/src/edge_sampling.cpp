@@ -38,6 +38,38 @@ double edgeMinCurvatureRadius(const TopoDS_Edge& edge) {
 
 double clampSpacing(double s, const SamplingContext& ctx) { return std::clamp(s, ctx.minSpacing, ctx.spacing); }
 
+// The medial sheet of a convex edge starts on the edge with balls of radius
+// 0 that touch both faces; a ball of radius r touches each face about r from
+// the edge. Where one face is sampled much finer than the other (a bolt hole
+// of radius 5, spacing 0.6, in a plate sampled at 2.9), the sheet's Voronoi
+// vertices hug the fine face and their balls poke through the coarse one
+// between its samples (by ~1 at r 2.4 on the flange: one contact instead of
+// two for 15 % of its vertices). So each face near a convex edge is graded
+// from the edge's spacing (the finer face's, computeSpacings), growing by
+// kConvexEdgeGrading per unit of distance from it.
+void gradeFacesFromConvexEdges(SamplingContext& ctx) {
+  const SolidTopology& topo = ctx.topo;
+  std::vector<std::vector<FaceSpacingField::Source>> sources(topo.faceCount());
+  for (int e = 0; e < topo.edgeCount(); ++e) {
+    if (topo.edgeDegenerate[e] || ctx.edgeFeatures[e].kind != EdgeKind::Convex) continue;
+    const double s = ctx.edgeSpacing[e];
+    if (!(s < ctx.spacing)) continue;  // nothing finer to pass on
+    BRepAdaptor_Curve curve(topo.edge(e));
+    // Points at most about the edge's spacing apart (at most 256): a node's
+    // distance to the edge is then off by less than that, its spacing by
+    // kConvexEdgeGrading times that.
+    const double length = ctx.edgeFeatures[e].length;
+    const int n = static_cast<int>(std::clamp(std::ceil(length / s), 2.0, 256.0));
+    std::vector<FaceSpacingField::Source> along;
+    for (int i = 0; i <= n; ++i)
+      along.push_back({curve.Value(curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n), s});
+    for (int f : topo.edgeFaces[e])
+      if (f >= 0) sources[f].insert(sources[f].end(), along.begin(), along.end());
+  }
+  for (int f = 0; f < topo.faceCount(); ++f)
+    ctx.faceSpacing[f].gradeFrom(sources[f], FaceSpacingField::kConvexEdgeGrading);
+}
+
 }  // namespace
 
 void computeSpacings(SamplingContext& ctx) {
@@ -51,26 +83,39 @@ void computeSpacings(SamplingContext& ctx) {
 
   // An edge is sampled evenly, at the smallest spacing its own curvature and
   // its faces' fields ask for along it.
-  ctx.edgeSpacing.assign(topo.edgeCount(), ctx.spacing);
-  for (int e = 0; e < topo.edgeCount(); ++e) {
-    if (topo.edgeDegenerate[e]) continue;
-    double s = kCurvatureFraction * ctx.boundsScale * edgeMinCurvatureRadius(topo.edge(e));
-    BRepAdaptor_Curve curve(topo.edge(e));
-    for (int f : topo.edgeFaces[e]) {
-      if (f < 0) continue;
-      const FaceSpacingField& field = ctx.faceSpacing[f];
-      if (field.minimum() == field.maximum()) {  // uniform: no need to find the edge on the face
-        s = std::min(s, field.minimum());
-        continue;
+  auto spaceEdges = [&]() {
+    ctx.edgeSpacing.assign(topo.edgeCount(), ctx.spacing);
+    for (int e = 0; e < topo.edgeCount(); ++e) {
+      if (topo.edgeDegenerate[e]) continue;
+      double s = kCurvatureFraction * ctx.boundsScale * edgeMinCurvatureRadius(topo.edge(e));
+      BRepAdaptor_Curve curve(topo.edge(e));
+      for (int f : topo.edgeFaces[e]) {
+        if (f < 0) continue;
+        const FaceSpacingField& field = ctx.faceSpacing[f];
+        if (field.minimum() == field.maximum()) {  // uniform: no need to find the edge on the face
+          s = std::min(s, field.minimum());
+          continue;
+        }
+        constexpr int n = 16;
+        for (int i = 0; i <= n; ++i) {
+          const gp_Pnt2d uv = uvOnFace(topo.edge(e), topo.face(f),
+                                       curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n);
+          s = std::min(s, field.at(uv.X(), uv.Y()));
+        }
       }
-      constexpr int n = 16;
-      for (int i = 0; i <= n; ++i) {
-        const gp_Pnt2d uv = uvOnFace(topo.edge(e), topo.face(f),
-                                     curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n);
-        s = std::min(s, field.at(uv.X(), uv.Y()));
-      }
+      ctx.edgeSpacing[e] = clampSpacing(s, ctx);
     }
-    ctx.edgeSpacing[e] = clampSpacing(s, ctx);
+  };
+  spaceEdges();
+  // Faces graded from their convex edges; then the edges again, since a
+  // face may now be finer along another of its edges (near a corner where a
+  // fine edge meets a coarse one): face samples finer than the edge's next
+  // to it cut between its samples and their triplets. Once, not to a fixed
+  // point: an edge takes the finest value along it over its whole length, so
+  // repeating would spread the finest spacing from edge to edge.
+  if (ctx.gradedSpacing) {
+    gradeFacesFromConvexEdges(ctx);
+    spaceEdges();
   }
 
   ctx.cornerRadius.assign(topo.vertexCount(), 0.0);

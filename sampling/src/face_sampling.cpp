@@ -36,6 +36,7 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
     const TopoDS_Face& face = topo.face(f);
     const FaceSpacingField& field = ctx.faceSpacing[f];
     const double smallestRadius = kMinDistanceFraction * field.minimum();
+    const bool graded = field.minimum() < field.maximum();
     GProp_GProps props;
     BRepGProp::SurfaceProperties(face, props);
     const double area = props.Mass();
@@ -109,9 +110,14 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
         gp_Vec su, sv;
         surf.D1(u, v, p, su, sv);
         if (unit(rng) * maxJ > su.Crossed(sv).Magnitude()) continue;
-        if (!builder.isClear(p, radius)) continue;
+        // The dart keeps clear by its own cell's radius, not the tile's
+        // smallest: a tile is ~32 of the face's smallest radii wide, and
+        // with the tile's radius a fine strip along one edge (a hole's rim,
+        // FaceSpacingField::kConvexEdgeGrading) made the whole tile as fine.
+        const double local = graded ? kMinDistanceFraction * field.at(u, v) : radius;
+        if (!builder.isClear(p, local)) continue;
         if (classifier.Perform(gp_Pnt2d(u, v)) != TopAbs_IN) continue;
-        ctx.recordFaceUv(builder.add(p, SampleKind::Face, f, radius), gp_Pnt2d(u, v));
+        ctx.recordFaceUv(builder.add(p, SampleKind::Face, f, local), gp_Pnt2d(u, v));
       }
     }
   }

@@ -153,17 +153,33 @@ FaceSpacingField::FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeI
     for (const Probe& p : thickness)
       node[a] = std::min(node[a], p.spacing + kGrading * std::max(0.0, points[a].Distance(p.point) - p.reach));
   }
+  graded_ = true;
+  nodePoints_ = std::move(points);
+  nodes_ = std::move(node);
+  for (const Probe& p : thickness) probes_.push_back({p.u, p.v, p.spacing});
+  computeCells();
+}
 
-  // A cell asks for the smallest value on its corners and on the probes inside it.
+void FaceSpacingField::gradeFrom(const std::vector<Source>& sources, double grading) {
+  if (!graded_ || sources.empty()) return;
+  for (std::size_t a = 0; a < nodes_.size(); ++a)
+    for (const Source& s : sources) nodes_[a] = std::min(nodes_[a], s.spacing + grading * nodePoints_[a].Distance(s.point));
+  computeCells();
+}
+
+// A cell asks for the smallest value on its corners and on the probes inside it.
+void FaceSpacingField::computeCells() {
+  constexpr int nodesPerSide = kCells + 1;
   cells_.resize(kCells * kCells);
   for (int j = 0; j < kCells; ++j)
     for (int i = 0; i < kCells; ++i) {
       const int n = j * nodesPerSide + i;
-      cells_[j * kCells + i] = std::min({node[n], node[n + 1], node[n + nodesPerSide], node[n + nodesPerSide + 1]});
+      cells_[j * kCells + i] =
+          std::min({nodes_[n], nodes_[n + 1], nodes_[n + nodesPerSide], nodes_[n + nodesPerSide + 1]});
     }
-  for (const Probe& p : thickness) {
-    double& cell = cells_[cellIndex(p.v, v0_, v1_) * kCells + cellIndex(p.u, u0_, u1_)];
-    cell = std::min(cell, p.spacing);
+  for (const auto& [u, v, spacing] : probes_) {
+    double& cell = cells_[cellIndex(v, v0_, v1_) * kCells + cellIndex(u, u0_, u1_)];
+    cell = std::min(cell, spacing);
   }
   minimum_ = *std::min_element(cells_.begin(), cells_.end());
   maximum_ = *std::max_element(cells_.begin(), cells_.end());

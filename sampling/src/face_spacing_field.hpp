@@ -7,7 +7,10 @@
 // the whole face: 115 k samples on a pointed cone, 11 k with the field.
 #pragma once
 
+#include <array>
 #include <vector>
+
+#include <gp_Pnt.hxx>
 
 #include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopoDS_Face.hxx>
@@ -19,6 +22,15 @@ class FaceSpacingField {
   static constexpr double kCurvatureFraction = 0.15;  // spacing <= this × radius of curvature (chord error ~0.3 %)
   static constexpr double kThicknessFraction = 0.4;   // spacing <= this × local wall thickness
   static constexpr double kGrading = 0.15;            // spacing grows by at most this × distance
+  // Away from a convex edge whose spacing is finer than the face's (a hole's
+  // rim in a plate, computeSpacings): a ball of the edge's sheet touching the
+  // face about r from the edge then meets samples spaced ~0.5 r, and pokes
+  // through the face between them by about (0.5 r / 2)² / (2 r) ≈ 3 % of r.
+  // Measured on the bundled flange (two contacts, samples): without it
+  // 85 %, 5.5 k; with 0.5 98.8 %, 7.7 k. In a first version (tile-wide
+  // dart radii, edges not spaced again) 0.15 / 0.3 / 0.5 / 0.8 gave
+  // 99.7 / 99.7 / 99.6 / 99.1 % with 14.5 / 10.7 / 8.9 / 7.0 k samples.
+  static constexpr double kConvexEdgeGrading = 0.5;
 
   // Probes `face` (curvature on a node grid, wall thickness by rays cast
   // inward through `solidRays`), clamps every value to [floor, cap] and grades
@@ -30,6 +42,16 @@ class FaceSpacingField {
   // (SamplingParams::boundsScale).
   FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeIntersector& solidRays, double floor, double cap,
                    bool graded, double boundsScale = 1.0);
+
+  // Graded from sources outside the face too (points on its convex edges,
+  // with the edges' spacing): every node becomes at most a source's spacing
+  // + grading × its distance to the node, and the cells are recomputed.
+  // No effect on a field that is not graded (one value per face).
+  struct Source {
+    gp_Pnt point;
+    double spacing;
+  };
+  void gradeFrom(const std::vector<Source>& sources, double grading);
 
   // The spacing of the grid cell holding (u, v): the smallest value on its
   // corners and probes, so the cell never asks for more than a point in it
@@ -44,8 +66,14 @@ class FaceSpacingField {
   int cellIndex(double x, double low, double high) const;      // cell holding x
   int lastCellIndex(double x, double low, double high) const;  // last cell a range ending at x reaches
 
+  void computeCells();  // from nodes_ and probes_
+
   static constexpr int kCells = 16;  // per UV side
   double u0_ = 0, u1_ = 1, v0_ = 0, v1_ = 1;
+  bool graded_ = false;
+  std::vector<gp_Pnt> nodePoints_;  // (kCells + 1)², row-major in v (graded only)
+  std::vector<double> nodes_;       // graded spacing at each node
+  std::vector<std::array<double, 3>> probes_;  // thickness probes: u, v, spacing (graded only)
   std::vector<double> cells_;  // kCells², row-major in v: min of corners and probes
   double minimum_ = 0, maximum_ = 0;
 };

@@ -18,10 +18,12 @@
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRepGProp.hxx>
@@ -30,6 +32,7 @@
 #include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <gp_Ax2.hxx>
 #include <gp_Vec.hxx>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
@@ -183,6 +186,47 @@ TEST(FaceSpacing, StepPlateIsFineOnlyUnderTheThinPart) {
               s.size(), widestUnderFlange, kHoleRadii * kPoissonFraction * 0.4 * 1.5, underThick, underFlange);
   EXPECT_LE(widestUnderFlange, kHoleRadii * kPoissonFraction * 0.4 * 1.5);
   EXPECT_GT(underThick, 2 * underFlange);
+}
+
+// A plate 100 x 100 x 10 with a hole of radius 5 through it, at h = 3. The
+// hole's wall needs 0.15 × 5 = 0.75 (curvature), the plate only h. The
+// medial sheet of the hole's rim (a convex edge) has balls of radius r
+// touching the top face about r from the rim: samples spaced h there let
+// such a ball poke through the face between them, and the vertex keeps one
+// contact (the bundled flange: 85 % two contacts). So the top face is graded
+// from the rim: near it, no hole in the samples wider than the rim's
+// spacing + kConvexEdgeGrading × the distance allows; far from it, h.
+TEST(FaceSpacing, FaceIsGradedFromAFinerConvexEdge) {
+  const double h = 3.0, radius = 5.0;
+  const TopoDS_Shape plate =
+      BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(-50, -50, 0), 100.0, 100.0, 10.0).Shape(),
+                      BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -1), gp_Dir(0, 0, 1)), radius, 12.0).Shape())
+          .Shape();
+  const GradedSamples graded = sampleGraded(plate, h);
+  const Dt& dt = graded.dt;
+  const double rimSpacing = 0.15 * radius;  // at most: the edge takes the finest of its faces and its curvature
+  double worst = 0;  // hole / allowed, on the top face around the rim (beyond its triplet legs)
+  for (double rho = radius + 1; rho <= radius + 6; rho += 0.25)
+    for (int k = 0; k < 96; ++k) {
+      const double a = 2 * M_PI * k / 96;
+      const double allowed = std::min(h, rimSpacing + FaceSpacingField::kConvexEdgeGrading * (rho - radius));
+      worst = std::max(worst, nearestSample(dt, rho * std::cos(a), rho * std::sin(a), 10.0) /
+                                  (kHoleRadii * kPoissonFraction * allowed));
+    }
+  auto onTop = [](double low, double high) {
+    return [=](const Vec3& p) {
+      const double rho = std::hypot(p[0], p[1]);
+      return std::abs(p[2] - 10) < 1e-9 && rho > low && rho < high && std::abs(p[0]) < 47 && std::abs(p[1]) < 47;
+    };
+  };
+  const double nearRim = medianNeighbourDistance(dt, onTop(radius + 1, radius + 3.5));
+  const double farAway = medianNeighbourDistance(dt, onTop(30, 70));
+  std::printf("plate with a hole r 5 at h 3: %zu samples; worst hole / allowed near the rim %.2f; neighbour distance "
+              "near the rim %.3f, far from it %.3f\n",
+              graded.samples.size(), worst, nearRim, farAway);
+  EXPECT_LE(worst, 1.0);
+  EXPECT_GT(nearRim, 0);  // samples there at all
+  EXPECT_GT(farAway, 2 * nearRim);
 }
 
 // A pair-mesh that is not valid is sampled again, the second time with
