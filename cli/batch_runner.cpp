@@ -203,10 +203,14 @@ class BatchRunner {
     startStep(job);
   }
 
+  // Outputs exist only when the file's last record is ok (publishOrDiscard):
+  // an earlier run's go, as for any failure.
   void recordUnstarted(const Job& job, const std::string& message) {
     FileResult r;
     r.path = todo_[job.input].path;
     r.output = todo_[job.input].output;
+    std::error_code ignored;
+    fs::remove_all(outDir_ / r.output, ignored);
     failPublish(r, message);
     r.step = "stage";
     log_.append(toJson(r));

@@ -124,15 +124,11 @@ namespace {
 // OUTDIR must hold what `run` made of this model: eval would otherwise
 // measure another solid's axis against this one and overwrite its eval.json.
 // `run` records each solid's exact volume and area in summary.json; they
-// must agree to 1e-6 (BRepGProp on the same B-rep gives the same numbers),
-// and OUTDIR must not hold more solids than the model has. Outputs without
-// that record (point-cloud runs, older outputs) are not checked.
+// must agree to 1e-6 (BRepGProp on the same B-rep gives the same numbers).
+// Outputs without that record (point-cloud runs, older outputs) are not
+// checked. (Extra solid_<k> folders are not refused: `run` leaves those of
+// an earlier run into the same OUTDIR in place.)
 void checkOutputsAreOfThisModel(const EvalCommandOptions& options, const LoadedModel& model) {
-  const std::string extra = solidDir(options.outDir, model.solids.size());
-  if (std::filesystem::exists(extra + "/medial.ply"))
-    throw InputError(kExitUsage, options.outDir + " holds more solids than " + options.model + " (" +
-                                     std::to_string(model.solids.size()) +
-                                     "): give `eval` the model that `run` was given");
   for (std::size_t i = 0; i < model.solids.size(); ++i) {
     std::ifstream in(solidDir(options.outDir, i) + "/summary.json");
     if (!in) continue;

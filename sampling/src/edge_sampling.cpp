@@ -55,9 +55,10 @@ void gradeFacesFromConvexEdges(SamplingContext& ctx) {
     const double s = ctx.edgeSpacing[e];
     if (!(s < ctx.spacing)) continue;  // nothing finer to pass on
     BRepAdaptor_Curve curve(topo.edge(e));
-    // Points at most about the edge's spacing apart (at most 256): a node's
-    // distance to the edge is then off by less than that, its spacing by
-    // kConvexEdgeGrading times that.
+    // Points about the edge's spacing apart, at most 257 (on a long edge
+    // with a fine spacing they are length / 256 apart): a node's distance to
+    // the edge is off by at most half that, its spacing by kConvexEdgeGrading
+    // times that.
     const double length = ctx.edgeFeatures[e].length;
     const int n = static_cast<int>(std::clamp(std::ceil(length / s), 2.0, 256.0));
     std::vector<FaceSpacingField::Source> along;
@@ -112,7 +113,9 @@ void computeSpacings(SamplingContext& ctx) {
   // fine edge meets a coarse one): face samples finer than the edge's next
   // to it cut between its samples and their triplets. Once, not to a fixed
   // point: an edge takes the finest value along it over its whole length, so
-  // repeating would spread the finest spacing from edge to edge.
+  // repeating would spread the finest spacing from edge to edge. So an edge
+  // made finer here does not grade its faces in turn (a face can still meet
+  // a finer edge one corner further on).
   if (ctx.gradedSpacing) {
     gradeFacesFromConvexEdges(ctx);
     spaceEdges();

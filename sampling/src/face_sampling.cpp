@@ -1,7 +1,7 @@
 // Face interiors: Poisson-disk samples by dart throwing on the surface (area
 // uniform), never a grid, kept clear of edge, corner and triplet samples. The
-// Poisson radius follows the face's spacing field tile by tile (one value for
-// the whole face unless the spacing is graded).
+// Poisson radius follows the face's spacing field cell by cell (one value for
+// the whole face unless the spacing is graded); the darts go tile by tile.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

@@ -36,7 +36,7 @@ class FaceSpacingField {
   // inward through `solidRays`), clamps every value to [floor, cap] and grades
   // it. `cap` is the global target spacing h. Not `graded`: one value for the
   // whole face, the smallest curvature bound on a 9 × 9 grid and the smallest
-  // ray probe (the rule before the field; still the default, see
+  // ray probe (the rule before the field; `--uniform-spacing`, see
   // SamplingParams::gradedSpacing).
   // `boundsScale` multiplies the curvature and thickness fractions
   // (SamplingParams::boundsScale).

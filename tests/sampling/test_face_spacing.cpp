@@ -226,6 +226,7 @@ TEST(FaceSpacing, FaceIsGradedFromAFinerConvexEdge) {
               graded.samples.size(), worst, nearRim, farAway);
   EXPECT_LE(worst, 1.0);
   EXPECT_GT(nearRim, 0);  // samples there at all
+  EXPECT_LT(nearRim, 0.6 * h);  // ungraded: 2.4 (measured), the Poisson spacing of h
   EXPECT_GT(farAway, 2 * nearRim);
 }
 
