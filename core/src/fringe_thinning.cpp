@@ -202,12 +202,11 @@ std::size_t thinFringe(MedialComplex& mc, const SampleSet& samples, const Fringe
   // polygon in the stack once (checked later, in another order) left 1.7 %
   // of the filleted box's vertices off its exact axis instead of 0.6 %.
   std::vector<Index> queue;
-  auto push = [&](Index p) { queue.push_back(p); };
   for (std::size_t p = 0; p < nf; ++p) {
     if (!candidate[p]) continue;
     for (Index k = mc.polygonOffsets[p]; k < mc.polygonOffsets[p + 1]; ++k)
       if (edgeUse[edges.slotEdge[k]] == 1) {
-        push(static_cast<Index>(p));
+        queue.push_back(static_cast<Index>(p));
         break;
       }
   }
@@ -223,7 +222,7 @@ std::size_t thinFringe(MedialComplex& mc, const SampleSet& samples, const Fringe
       const Index v = mc.polygonVertices[k];
       --vertexUse[v];
       for (Index j = vertexOffsets[v]; j < vertexOffsets[v + 1]; ++j)
-        if (alive[vertexPolygons[j]] && candidate[vertexPolygons[j]]) push(vertexPolygons[j]);
+        if (alive[vertexPolygons[j]] && candidate[vertexPolygons[j]]) queue.push_back(vertexPolygons[j]);
     }
   }
   if (removed > 0) keepPolygons(mc, alive);

@@ -36,7 +36,6 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
     const TopoDS_Face& face = topo.face(f);
     const FaceSpacingField& field = ctx.faceSpacing[f];
     const double smallestRadius = kMinDistanceFraction * field.minimum();
-    const bool graded = field.minimum() < field.maximum();
     GProp_GProps props;
     BRepGProp::SurfaceProperties(face, props);
     const double area = props.Mass();
@@ -114,7 +113,8 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
         // smallest: a tile is ~32 of the face's smallest radii wide, and
         // with the tile's radius a fine strip along one edge (a hole's rim,
         // FaceSpacingField::kConvexEdgeGrading) made the whole tile as fine.
-        const double local = graded ? kMinDistanceFraction * field.at(u, v) : radius;
+        // (On a uniform field every cell holds the tile's value.)
+        const double local = kMinDistanceFraction * field.at(u, v);
         if (!builder.isClear(p, local)) continue;
         if (classifier.Perform(gp_Pnt2d(u, v)) != TopAbs_IN) continue;
         ctx.recordFaceUv(builder.add(p, SampleKind::Face, f, local), gp_Pnt2d(u, v));

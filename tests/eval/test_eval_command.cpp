@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -23,21 +24,33 @@ std::string freshDir(const std::string& name) {
   return dir;
 }
 
+// The InputError runEvalCommand throws (code 0 and an empty message, with a
+// test failure, when it throws none).
+struct Refusal {
+  int code = 0;
+  std::string message;
+};
+Refusal refusalOf(const EvalCommandOptions& options) {
+  try {
+    runEvalCommand(options);
+  } catch (const InputError& e) {
+    return {e.code(), e.what()};
+  }
+  ADD_FAILURE() << "no error";
+  return {};
+}
+
 TEST(EvalCommand, MissingMedialPlyIsAOneLineInputError) {
   EvalCommandOptions options;
   options.model = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";
   options.outDir = freshDir("missing");
   options.quiet = true;
-  try {
-    runEvalCommand(options);
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
-    const std::string message = e.what();
-    EXPECT_EQ(e.code(), kExitUnreadableInput);
-    EXPECT_NE(message.find("missing " + options.outDir + "/solid_0/medial.ply"), std::string::npos) << message;
-    EXPECT_NE(message.find("cadmedial run"), std::string::npos) << message;
-    EXPECT_EQ(message.find('\n'), std::string::npos);
-  }
+  const Refusal refusal = refusalOf(options);
+  EXPECT_EQ(refusal.code, kExitUnreadableInput);
+  EXPECT_NE(refusal.message.find("missing " + options.outDir + "/solid_0/medial.ply"), std::string::npos)
+      << refusal.message;
+  EXPECT_NE(refusal.message.find("cadmedial run"), std::string::npos) << refusal.message;
+  EXPECT_EQ(refusal.message.find('\n'), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(options.outDir + "/solid_0/eval.json"));
 }
 
@@ -48,13 +61,9 @@ TEST(EvalCommand, MalformedMedialPlyNamesTheFile) {
   options.quiet = true;
   std::filesystem::create_directories(options.outDir + "/solid_0");
   std::ofstream(options.outDir + "/solid_0/medial.ply") << "ply\nformat ascii 1.0\nelement vertex 1\n";
-  try {
-    runEvalCommand(options);
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.code(), kExitUnreadableInput);
-    EXPECT_NE(std::string(e.what()).find("solid_0/medial.ply: line 4"), std::string::npos) << e.what();
-  }
+  const Refusal refusal = refusalOf(options);
+  EXPECT_EQ(refusal.code, kExitUnreadableInput);
+  EXPECT_NE(refusal.message.find("solid_0/medial.ply: line 4"), std::string::npos) << refusal.message;
 }
 
 TEST(EvalCommand, ExactBoxAxisWritesPassingEvalJson) {
@@ -99,15 +108,10 @@ TEST(EvalCommand, OutputsOfAnotherModelAreRefusedAndEvalJsonIsKept) {
 
   // Another solid's volume: refused before any evaluation, eval.json untouched.
   writeRunSummary(solid, 1000.0, 5200.0);
-  try {
-    runEvalCommand(options);
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
-    const std::string message = e.what();
-    EXPECT_EQ(e.code(), kExitUsage);
-    EXPECT_NE(message.find("another solid"), std::string::npos) << message;
-    EXPECT_EQ(message.find('\n'), std::string::npos);
-  }
+  const Refusal refusal = refusalOf(options);
+  EXPECT_EQ(refusal.code, kExitUsage);
+  EXPECT_NE(refusal.message.find("another solid"), std::string::npos) << refusal.message;
+  EXPECT_EQ(refusal.message.find('\n'), std::string::npos);
   std::ifstream kept(solid + "/eval.json");
   EXPECT_EQ(nlohmann::json::parse(kept).value("kept", false), true);
 
@@ -123,12 +127,7 @@ TEST(EvalCommand, BadToleranceIsAUsageError) {
   options.model = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";
   options.outDir = freshDir("tolerance");
   options.tolerance = 0;
-  try {
-    runEvalCommand(options);
-    ADD_FAILURE();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.code(), kExitUsage);
-  }
+  EXPECT_EQ(refusalOf(options).code, kExitUsage);
 }
 
 }  // namespace
