@@ -68,7 +68,7 @@ void gradeFacesFromConvexEdges(SamplingContext& ctx) {
       if (f >= 0) sources[f].insert(sources[f].end(), along.begin(), along.end());
   }
   for (int f = 0; f < topo.faceCount(); ++f)
-    ctx.faceSpacing[f].gradeFrom(sources[f], FaceSpacingField::kConvexEdgeGrading);
+    ctx.faceSpacing[f].gradeFrom(std::move(sources[f]), FaceSpacingField::kConvexEdgeGrading);
 }
 
 }  // namespace
@@ -99,9 +99,9 @@ void computeSpacings(SamplingContext& ctx) {
         }
         constexpr int n = 16;
         for (int i = 0; i <= n; ++i) {
-          const gp_Pnt2d uv = uvOnFace(topo.edge(e), topo.face(f),
-                                       curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n);
-          s = std::min(s, field.at(uv.X(), uv.Y()));
+          const double t = curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n;
+          const gp_Pnt2d uv = uvOnFace(topo.edge(e), topo.face(f), t);
+          s = std::min(s, field.at(uv.X(), uv.Y(), curve.Value(t)));
         }
       }
       ctx.edgeSpacing[e] = clampSpacing(s, ctx);

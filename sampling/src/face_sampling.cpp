@@ -23,10 +23,44 @@ constexpr double kDartsPerDisk = 12.0;         // candidates per expected sample
 constexpr double kMaxDarts = 4e6;              // per face, to bound time on huge faces
 constexpr double kTileRadii = 32.0;            // tile side, in Poisson radii (~800 samples a tile)
 
+constexpr double kLeafRadii = 4.0;            // a tile near a finer edge is split down to this many of its radii
+constexpr int kMaxSplits = 8;
+
 // Tiles along a UV side of 3D length `length`: about kTileRadii radii each.
 int tileCount(double length, double radius) {
   const double tiles = length / (kTileRadii * radius);
   return std::isfinite(tiles) ? static_cast<int>(std::clamp(std::ceil(tiles), 1.0, 4096.0)) : 1;
+}
+
+struct Tile {
+  double u, v, du, dv;  // UV corner and sides
+  double share;         // of a whole tile: 1, 1/4, 1/16 ... (exact, so a uniform face's darts are as before)
+};
+
+struct TileRadius {
+  double radius;     // the smallest Poisson radius anywhere in the tile
+  double width;      // 3D, about
+  bool nearSources;  // the radius comes from a convex edge's points (FaceSpacingField::gradeFrom)
+};
+
+// Calls visit(leaf, radius) for the leaves of `tile`. A tile gets 12 darts
+// per disk of its smallest radius, so one whose radius comes from a finer
+// convex edge is split in four (Z order: the darts stay local) while it is
+// wider than kLeafRadii of its own radius: next to a hole's rim the spacing
+// grows by 0.5 per unit of distance, and a tile 32 of the rim's radii wide
+// threw darts for 0.45 over ground that needs 2.2 (twice the darts of the
+// whole face on the bundled flange, measured).
+template <typename Measure, typename Visit>
+void forEachLeaf(const Tile& tile, int splits, const Measure& measure, const Visit& visit) {
+  const TileRadius r = measure(tile);
+  if (r.nearSources && splits < kMaxSplits && r.width > kLeafRadii * r.radius) {
+    for (int k = 0; k < 4; ++k)
+      forEachLeaf(Tile{tile.u + (k & 1) * tile.du / 2, tile.v + (k >> 1) * tile.dv / 2, tile.du / 2, tile.dv / 2,
+                       tile.share / 4},
+                  splits + 1, measure, visit);
+    return;
+  }
+  visit(tile, r.radius);
 }
 }  // namespace
 
@@ -72,23 +106,35 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
     const int tilesV = tileCount(sumSv / count * (v1 - v0), smallestRadius);
     const double du = (u1 - u0) / tilesU, dv = (v1 - v0) / tilesV;
     const std::int64_t tiles = static_cast<std::int64_t>(tilesU) * tilesV;
-    auto tileCorner = [&](std::int64_t t) {
+    auto tileAt = [&](std::int64_t t) {
       const std::int64_t row = t / tilesU, column = row % 2 == 0 ? t % tilesU : tilesU - 1 - t % tilesU;
-      return gp_Pnt2d(u0 + du * static_cast<double>(column), v0 + dv * static_cast<double>(row));
+      return Tile{u0 + du * static_cast<double>(column), v0 + dv * static_cast<double>(row), du, dv, 1.0};
     };
 
-    // Each tile's radius is the smallest its cells of the field ask for; its
-    // darts are its share of 12 per disk of that radius. weight = (smallest
-    // radius / tile radius)^2 is exactly 1 on a uniform field, where every
-    // tile then gets the same share as with one radius for the face. Two
-    // passes (sum, then throw) instead of per-tile arrays: a tiny --spacing
-    // can make millions of tiles.
-    auto tileRadius = [&](const gp_Pnt2d& c) {
-      return kMinDistanceFraction * field.minOver(c.X(), c.X() + du, c.Y(), c.Y() + dv);
+    // Each tile's radius is the smallest its cells of the field ask for (and
+    // near a finer convex edge, its points; then the tile is split, see
+    // forEachLeaf); its darts are its share of 12 per disk of that radius.
+    // weight = share × (smallest radius / tile radius)^2 is exactly 1 per
+    // tile on a uniform field, where every tile then gets the same share as
+    // with one radius for the face. Two passes (sum, then throw) instead of
+    // per-tile arrays: a tiny --spacing can make millions of tiles.
+    auto measure = [&](const Tile& t) {
+      TileRadius r{kMinDistanceFraction * field.minOver(t.u, t.u + t.du, t.v, t.v + t.dv), 0, false};
+      if (!field.nearSources(t.u, t.u + t.du, t.v, t.v + t.dv)) return r;
+      // Ask the edge's points about a ball round the tile's centre that holds its corners.
+      const gp_Pnt centre = surf.Value(t.u + t.du / 2, t.v + t.dv / 2);
+      double reach = 0;
+      for (const double a : {0.0, t.du})
+        for (const double b : {0.0, t.dv}) reach = std::max(reach, centre.Distance(surf.Value(t.u + a, t.v + b)));
+      const double spacing = field.sourcesAllow(centre, 1.25 * reach, r.radius / kMinDistanceFraction);
+      return TileRadius{kMinDistanceFraction * spacing, 2 * reach, spacing * kMinDistanceFraction < r.radius};
     };
-    auto weight = [&](double radius) { return (smallestRadius / radius) * (smallestRadius / radius); };
+    auto weight = [&](const Tile& t, double radius) {
+      return t.share * (smallestRadius / radius) * (smallestRadius / radius);
+    };
     double weightSum = 0;
-    for (std::int64_t t = 0; t < tiles; ++t) weightSum += weight(tileRadius(tileCorner(t)));
+    for (std::int64_t t = 0; t < tiles; ++t)
+      forEachLeaf(tileAt(t), 0, measure, [&](const Tile& leaf, double radius) { weightSum += weight(leaf, radius); });
     const double totalDarts = std::floor(std::min(
         kMaxDarts, kDartsPerDisk * area / (smallestRadius * smallestRadius) * (weightSum / static_cast<double>(tiles))));
 
@@ -96,30 +142,33 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
     std::mt19937_64 rng(seed * 1000003ull + static_cast<unsigned>(f));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     double weightBefore = 0, dartsBefore = 0;
-    for (std::int64_t t = 0; t < tiles; ++t) {
-      const gp_Pnt2d c = tileCorner(t);
-      const double radius = tileRadius(c);
-      weightBefore += weight(radius);
+    auto throwDarts = [&](const Tile& leaf, double radius) {
+      weightBefore += weight(leaf, radius);
       const double dartsAfter = std::floor(totalDarts * weightBefore / weightSum);
       const std::int64_t dartsHere = static_cast<std::int64_t>(dartsAfter - dartsBefore);
       dartsBefore = dartsAfter;
       for (std::int64_t k = 0; k < dartsHere; ++k) {
-        const double u = c.X() + du * unit(rng), v = c.Y() + dv * unit(rng);
+        const double u = leaf.u + leaf.du * unit(rng), v = leaf.v + leaf.dv * unit(rng);
         gp_Pnt p;
         gp_Vec su, sv;
         surf.D1(u, v, p, su, sv);
         if (unit(rng) * maxJ > su.Crossed(sv).Magnitude()) continue;
-        // The dart keeps clear by its own cell's radius, not the tile's
-        // smallest: a tile is ~32 of the face's smallest radii wide, and
-        // with the tile's radius a fine strip along one edge (a hole's rim,
-        // FaceSpacingField::kConvexEdgeGrading) made the whole tile as fine.
-        // (On a uniform field every cell holds the tile's value.)
-        const double local = kMinDistanceFraction * field.at(u, v);
-        if (!builder.isClear(p, local)) continue;
+        // The dart keeps clear by the radius at its own point, not the
+        // tile's smallest: with the tile's, a fine strip along one edge (a
+        // hole's rim, FaceSpacingField::kConvexEdgeGrading) made the whole
+        // tile as fine. (On a uniform field every point has the tile's.)
+        // Most darts land too near a sample even for the smallest radius
+        // their field cell can ask for: those go before the search for the
+        // radius at the point near a convex edge's points (at()).
+        const double lowest = kMinDistanceFraction * field.lowestNear(u, v);
+        if (!builder.isClear(p, lowest)) continue;
+        const double local = kMinDistanceFraction * field.at(u, v, p);
+        if (local > lowest && !builder.isClear(p, local)) continue;
         if (classifier.Perform(gp_Pnt2d(u, v)) != TopAbs_IN) continue;
         ctx.recordFaceUv(builder.add(p, SampleKind::Face, f, local), gp_Pnt2d(u, v));
       }
-    }
+    };
+    for (std::int64_t t = 0; t < tiles; ++t) forEachLeaf(tileAt(t), 0, measure, throwDarts);
   }
 }
 

@@ -157,14 +157,30 @@ FaceSpacingField::FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeI
   nodePoints_ = std::move(points);
   nodes_ = std::move(node);
   for (const Probe& p : thickness) probes_.push_back({p.u, p.v, p.spacing});
+  // A ball about each cell's centre that holds the cell: out to its farthest
+  // corner, with a margin for the bulge of a curved cell between corners.
+  for (int j = 0; j < kCells; ++j)
+    for (int i = 0; i < kCells; ++i) {
+      const gp_Pnt centre = surf.Value(u0_ + (u1_ - u0_) * (i + 0.5) / kCells, v0_ + (v1_ - v0_) * (j + 0.5) / kCells);
+      const int n = j * nodesPerSide + i;
+      double radius = 0;
+      for (int corner : {n, n + 1, n + nodesPerSide, n + nodesPerSide + 1})
+        radius = std::max(radius, centre.Distance(nodePoints_[corner]));
+      cellCentres_.push_back(centre);
+      cellRadii_.push_back(1.25 * radius);
+    }
   computeCells();
 }
 
-void FaceSpacingField::gradeFrom(const std::vector<Source>& sources, double grading) {
+void FaceSpacingField::gradeFrom(std::vector<Source> sources, double grading) {
   if (!graded_ || sources.empty()) return;
-  for (std::size_t a = 0; a < nodes_.size(); ++a)
-    for (const Source& s : sources) nodes_[a] = std::min(nodes_[a], s.spacing + grading * nodePoints_[a].Distance(s.point));
+  sources_ = std::make_unique<SpacingSources>(std::move(sources), grading);
+  for (std::size_t a = 0; a < nodes_.size(); ++a) nodes_[a] = sources_->allowedNear(nodePoints_[a], 0, nodes_[a]);
   computeCells();
+  sourceFloor_.resize(cells_.size());
+  for (std::size_t c = 0; c < cells_.size(); ++c)
+    sourceFloor_[c] = sources_->allowedNear(cellCentres_[c], cellRadii_[c], cells_[c]);
+  minimum_ = std::min(minimum_, sources_->finest());
 }
 
 // A cell asks for the smallest value on its corners and on the probes inside it.
@@ -197,17 +213,38 @@ int FaceSpacingField::lastCellIndex(double x, double low, double high) const {
   return static_cast<int>(std::clamp(cell, 0.0, static_cast<double>(kCells - 1)));
 }
 
-double FaceSpacingField::at(double u, double v) const {
-  return cells_[cellIndex(v, v0_, v1_) * kCells + cellIndex(u, u0_, u1_)];
+double FaceSpacingField::at(double u, double v, const gp_Pnt& p) const {
+  const int c = cellIndex(v, v0_, v1_) * kCells + cellIndex(u, u0_, u1_);
+  if (!sources_ || sourceFloor_[c] >= cells_[c]) return cells_[c];
+  return sources_->allowedNear(p, 0, cells_[c]);
+}
+
+double FaceSpacingField::lowestNear(double u, double v) const {
+  const int c = cellIndex(v, v0_, v1_) * kCells + cellIndex(u, u0_, u1_);
+  return sources_ ? std::min(cells_[c], sourceFloor_[c]) : cells_[c];
+}
+
+// A box ending exactly on a cell boundary does not reach into the next cell.
+template <typename Visit>
+void FaceSpacingField::forCellsOver(double uLow, double uHigh, double vLow, double vHigh, Visit visit) const {
+  for (int j = cellIndex(vLow, v0_, v1_); j <= lastCellIndex(vHigh, v0_, v1_); ++j)
+    for (int i = cellIndex(uLow, u0_, u1_); i <= lastCellIndex(uHigh, u0_, u1_); ++i) visit(j * kCells + i);
 }
 
 double FaceSpacingField::minOver(double uLow, double uHigh, double vLow, double vHigh) const {
   double s = maximum_;
-  // A box ending exactly on a cell boundary does not reach into the next cell.
-  for (int j = cellIndex(vLow, v0_, v1_); j <= lastCellIndex(vHigh, v0_, v1_); ++j)
-    for (int i = cellIndex(uLow, u0_, u1_); i <= lastCellIndex(uHigh, u0_, u1_); ++i)
-      s = std::min(s, cells_[j * kCells + i]);
+  forCellsOver(uLow, uHigh, vLow, vHigh, [&](int c) { s = std::min(s, cells_[c]); });
   return s;
+}
+
+bool FaceSpacingField::nearSources(double uLow, double uHigh, double vLow, double vHigh) const {
+  bool near = false;
+  if (sources_) forCellsOver(uLow, uHigh, vLow, vHigh, [&](int c) { near = near || sourceFloor_[c] < cells_[c]; });
+  return near;
+}
+
+double FaceSpacingField::sourcesAllow(const gp_Pnt& centre, double radius, double upTo) const {
+  return sources_ ? sources_->allowedNear(centre, radius, upTo) : upTo;
 }
 
 }  // namespace cadmedial

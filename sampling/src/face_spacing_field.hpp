@@ -8,12 +8,15 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <vector>
 
 #include <gp_Pnt.hxx>
 
 #include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopoDS_Face.hxx>
+
+#include "spacing_sources.hpp"
 
 namespace cadmedial {
 
@@ -44,27 +47,35 @@ class FaceSpacingField {
                    bool graded, double boundsScale = 1.0);
 
   // Graded from sources outside the face too (points on its convex edges,
-  // with the edges' spacing): every node becomes at most a source's spacing
-  // + grading × its distance to the node, and the cells are recomputed.
-  // No effect on a field that is not graded (one value per face).
-  struct Source {
-    gp_Pnt point;
-    double spacing;
-  };
-  void gradeFrom(const std::vector<Source>& sources, double grading);
+  // with the edges' spacing): the spacing anywhere becomes at most a source's
+  // spacing + grading × its distance to it. The nodes take it, so the cells
+  // do, and at() and minOver() ask the sources themselves where a cell is
+  // too coarse to show it. No effect on a field that is not graded (one
+  // value per face).
+  using Source = SpacingSources::Source;
+  void gradeFrom(std::vector<Source> sources, double grading);
 
-  // The spacing of the grid cell holding (u, v): the smallest value on its
-  // corners and probes, so the cell never asks for more than a point in it
-  // needs.
-  double at(double u, double v) const;
-  // The smallest spacing over the cells that a UV box overlaps.
+  // The spacing at the point p = S(u, v) of the face: its grid cell's (the
+  // smallest value on the cell's corners and probes, so the cell never asks
+  // for more than a point in it needs), or less near a source.
+  double at(double u, double v, const gp_Pnt& p) const;
+  // The smallest that at() can be anywhere in the cell holding (u, v): cheap
+  // (no search), for rejecting a dart that is not clear even at that.
+  double lowestNear(double u, double v) const;
+  // The smallest spacing over the cells that a UV box overlaps; where
+  // nearSources(box), the sources may ask for less inside it:
+  // sourcesAllow(a ball holding the box's points, that minimum) says how much.
   double minOver(double uLow, double uHigh, double vLow, double vHigh) const;
+  bool nearSources(double uLow, double uHigh, double vLow, double vHigh) const;
+  double sourcesAllow(const gp_Pnt& centre, double radius, double upTo) const;
   double minimum() const { return minimum_; }
   double maximum() const { return maximum_; }
 
  private:
   int cellIndex(double x, double low, double high) const;      // cell holding x
   int lastCellIndex(double x, double low, double high) const;  // last cell a range ending at x reaches
+  template <typename Visit>
+  void forCellsOver(double uLow, double uHigh, double vLow, double vHigh, Visit visit) const;
 
   void computeCells();  // from nodes_ and probes_
 
@@ -75,6 +86,13 @@ class FaceSpacingField {
   std::vector<double> nodes_;       // graded spacing at each node
   std::vector<std::array<double, 3>> probes_;  // thickness probes: u, v, spacing (graded only)
   std::vector<double> cells_;  // kCells², row-major in v: min of corners and probes
+  // Graded only: each cell's centre point and the radius of a ball about it
+  // that holds the cell, and the smallest spacing the sources allow in that
+  // ball (cells where it is no smaller than the cell's own skip the search).
+  std::vector<gp_Pnt> cellCentres_;
+  std::vector<double> cellRadii_;
+  std::vector<double> sourceFloor_;
+  std::unique_ptr<SpacingSources> sources_;
   double minimum_ = 0, maximum_ = 0;
 };
 
