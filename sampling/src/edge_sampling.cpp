@@ -55,12 +55,14 @@ void gradeFacesFromConvexEdges(SamplingContext& ctx) {
     const double s = ctx.edgeSpacing[e];
     if (!(s < ctx.spacing)) continue;  // nothing finer to pass on
     BRepAdaptor_Curve curve(topo.edge(e));
-    // Points about the edge's spacing apart, at most 257 (on a long edge
-    // with a fine spacing they are length / 256 apart): a node's distance to
-    // the edge is off by at most half that, its spacing by kConvexEdgeGrading
-    // times that.
+    // Points the edge's spacing apart, as many as the edge's own samples
+    // (the k-d tree of SpacingSources takes them all): a point's distance
+    // to the edge is off by at most s / 2, its spacing by
+    // kConvexEdgeGrading × s / 2. (At most 257 while the grading lived on the
+    // field's nodes only: a 1000 mm edge at s 1 then allowed 2 next to it.)
     const double length = ctx.edgeFeatures[e].length;
-    const int n = static_cast<int>(std::clamp(std::ceil(length / s), 2.0, 256.0));
+    const double points = std::ceil(length / s);
+    const int n = std::isfinite(points) ? static_cast<int>(std::clamp(points, 2.0, 1e7)) : 2;
     std::vector<FaceSpacingField::Source> along;
     for (int i = 0; i <= n; ++i)
       along.push_back({curve.Value(curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n), s});

@@ -1,7 +1,8 @@
 // Face interiors: Poisson-disk samples by dart throwing on the surface (area
 // uniform), never a grid, kept clear of edge, corner and triplet samples. The
-// Poisson radius follows the face's spacing field cell by cell (one value for
-// the whole face unless the spacing is graded); the darts go tile by tile.
+// Poisson radius follows the face's spacing field cell by cell, and point by
+// point near its finer convex edges (one value for the whole face unless the
+// spacing is graded); the darts go tile by tile.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -22,9 +23,8 @@ constexpr double kMinDistanceFraction = 0.75;  // Poisson radius = this × face 
 constexpr double kDartsPerDisk = 12.0;         // candidates per expected sample
 constexpr double kMaxDarts = 4e6;              // per face, to bound time on huge faces
 constexpr double kTileRadii = 32.0;            // tile side, in Poisson radii (~800 samples a tile)
-
-constexpr double kLeafRadii = 4.0;            // a tile near a finer edge is split down to this many of its radii
-constexpr int kMaxSplits = 8;
+constexpr double kLeafRadii = 4.0;             // a tile near a finer edge is split down to this width, in its radii
+constexpr int kMaxSplits = 8;                  // in four, at most this often
 
 // Tiles along a UV side of 3D length `length`: about kTileRadii radii each.
 int tileCount(double length, double radius) {
@@ -39,14 +39,15 @@ struct Tile {
 
 struct TileRadius {
   double radius;     // the smallest Poisson radius anywhere in the tile
-  double width;      // 3D, about
+  double width;      // 3D: the diameter of the ball that holds it (FaceSpacingField::ballHolding), ~1.25 x its diagonal
   bool nearSources;  // the radius comes from a convex edge's points (FaceSpacingField::gradeFrom)
 };
 
 // Calls visit(leaf, radius) for the leaves of `tile`. A tile gets 12 darts
 // per disk of its smallest radius, so one whose radius comes from a finer
 // convex edge is split in four (Z order: the darts stay local) while it is
-// wider than kLeafRadii of its own radius: next to a hole's rim the spacing
+// wider than kLeafRadii of its own radius (about 3 across its diagonal):
+// next to a hole's rim the spacing
 // grows by 0.5 per unit of distance, and a tile 32 of the rim's radii wide
 // threw darts for 0.45 over ground that needs 2.2 (twice the darts of the
 // whole face on the bundled flange, measured).
@@ -121,13 +122,11 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
     auto measure = [&](const Tile& t) {
       TileRadius r{kMinDistanceFraction * field.minOver(t.u, t.u + t.du, t.v, t.v + t.dv), 0, false};
       if (!field.nearSources(t.u, t.u + t.du, t.v, t.v + t.dv)) return r;
-      // Ask the edge's points about a ball round the tile's centre that holds its corners.
-      const gp_Pnt centre = surf.Value(t.u + t.du / 2, t.v + t.dv / 2);
-      double reach = 0;
-      for (const double a : {0.0, t.du})
-        for (const double b : {0.0, t.dv}) reach = std::max(reach, centre.Distance(surf.Value(t.u + a, t.v + b)));
-      const double spacing = field.sourcesAllow(centre, 1.25 * reach, r.radius / kMinDistanceFraction);
-      return TileRadius{kMinDistanceFraction * spacing, 2 * reach, spacing * kMinDistanceFraction < r.radius};
+      // Ask the edge's points about a ball that holds the tile.
+      const FaceSpacingField::Ball ball = FaceSpacingField::ballHolding(surf, t.u, t.u + t.du, t.v, t.v + t.dv);
+      const double cellSpacing = r.radius / kMinDistanceFraction;
+      const double spacing = field.sourcesAllow(ball.centre, ball.radius, cellSpacing);
+      return TileRadius{kMinDistanceFraction * spacing, 2 * ball.radius, spacing < cellSpacing};
     };
     auto weight = [&](const Tile& t, double radius) {
       return t.share * (smallestRadius / radius) * (smallestRadius / radius);

@@ -157,19 +157,28 @@ FaceSpacingField::FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeI
   nodePoints_ = std::move(points);
   nodes_ = std::move(node);
   for (const Probe& p : thickness) probes_.push_back({p.u, p.v, p.spacing});
-  // A ball about each cell's centre that holds the cell: out to its farthest
-  // corner, with a margin for the bulge of a curved cell between corners.
   for (int j = 0; j < kCells; ++j)
     for (int i = 0; i < kCells; ++i) {
-      const gp_Pnt centre = surf.Value(u0_ + (u1_ - u0_) * (i + 0.5) / kCells, v0_ + (v1_ - v0_) * (j + 0.5) / kCells);
-      const int n = j * nodesPerSide + i;
-      double radius = 0;
-      for (int corner : {n, n + 1, n + nodesPerSide, n + nodesPerSide + 1})
-        radius = std::max(radius, centre.Distance(nodePoints_[corner]));
-      cellCentres_.push_back(centre);
-      cellRadii_.push_back(1.25 * radius);
+      const double du = (u1_ - u0_) / kCells, dv = (v1_ - v0_) / kCells;
+      const Ball ball = ballHolding(surf, u0_ + du * i, u0_ + du * (i + 1), v0_ + dv * j, v0_ + dv * (j + 1));
+      cellCentres_.push_back(ball.centre);
+      cellRadii_.push_back(ball.radius);
     }
   computeCells();
+}
+
+FaceSpacingField::Ball FaceSpacingField::ballHolding(const Adaptor3d_Surface& surface, double uLow, double uHigh,
+                                                     double vLow, double vHigh) {
+  const double uMid = (uLow + uHigh) / 2, vMid = (vLow + vHigh) / 2;
+  const gp_Pnt centre = surface.Value(uMid, vMid);
+  // Corners, sides' midpoints, quarters' centres (fractions of the box).
+  static constexpr double kProbes[12][2] = {{0, 0},      {1, 0},       {0, 1},       {1, 1},
+                                            {0.5, 0},    {0.5, 1},     {0, 0.5},     {1, 0.5},
+                                            {0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}};
+  double radius = 0;
+  for (const auto& [a, b] : kProbes)
+    radius = std::max(radius, centre.Distance(surface.Value(uLow + (uHigh - uLow) * a, vLow + (vHigh - vLow) * b)));
+  return {centre, 1.25 * radius};
 }
 
 void FaceSpacingField::gradeFrom(std::vector<Source> sources, double grading) {

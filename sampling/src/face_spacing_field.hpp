@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include <Adaptor3d_Surface.hxx>
 #include <gp_Pnt.hxx>
 
 #include <IntCurvesFace_ShapeIntersector.hxx>
@@ -49,9 +50,9 @@ class FaceSpacingField {
   // Graded from sources outside the face too (points on its convex edges,
   // with the edges' spacing): the spacing anywhere becomes at most a source's
   // spacing + grading × its distance to it. The nodes take it, so the cells
-  // do, and at() and minOver() ask the sources themselves where a cell is
-  // too coarse to show it. No effect on a field that is not graded (one
-  // value per face).
+  // do, and at() and sourcesAllow() ask the sources themselves where a cell
+  // is too coarse to show it. No effect on a field that is not graded (one
+  // value per face). Once per field: a second call replaces the sources.
   using Source = SpacingSources::Source;
   void gradeFrom(std::vector<Source> sources, double grading);
 
@@ -59,8 +60,9 @@ class FaceSpacingField {
   // smallest value on the cell's corners and probes, so the cell never asks
   // for more than a point in it needs), or less near a source.
   double at(double u, double v, const gp_Pnt& p) const;
-  // The smallest that at() can be anywhere in the cell holding (u, v): cheap
-  // (no search), for rejecting a dart that is not clear even at that.
+  // The smallest that at() can be anywhere in the cell holding (u, v), as
+  // far as the ball estimated to hold the cell goes (ballHolding): cheap (no
+  // search), for rejecting a dart that is not clear even at that.
   double lowestNear(double u, double v) const;
   // The smallest spacing over the cells that a UV box overlaps; where
   // nearSources(box), the sources may ask for less inside it:
@@ -69,6 +71,17 @@ class FaceSpacingField {
   bool nearSources(double uLow, double uHigh, double vLow, double vHigh) const;
   double sourcesAllow(const gp_Pnt& centre, double radius, double upTo) const;
   double minimum() const { return minimum_; }
+
+  // A ball about S(centre of the UV box) that holds the box's points, from
+  // the corners, the sides' midpoints and the centres of the four quarters,
+  // with a 25 % margin. An estimate, not a bound: a box wrapping more than
+  // half a turn of a surface can reach beyond it (then a dart near a source
+  // takes its cell's spacing, the grading at the nodes only).
+  struct Ball {
+    gp_Pnt centre;
+    double radius;
+  };
+  static Ball ballHolding(const Adaptor3d_Surface& surface, double uLow, double uHigh, double vLow, double vHigh);
   double maximum() const { return maximum_; }
 
  private:

@@ -42,8 +42,6 @@ SpacingSources::SpacingSources(std::vector<Source> sources, double grading)
 }
 
 SpacingSources::~SpacingSources() = default;
-SpacingSources::SpacingSources(SpacingSources&&) noexcept = default;
-SpacingSources& SpacingSources::operator=(SpacingSources&&) noexcept = default;
 
 double SpacingSources::allowedNear(const gp_Pnt& p, double slack, double upTo) const {
   if (count_ == 0) return upTo;

@@ -23,8 +23,8 @@ class SpacingSources {
 
   SpacingSources(std::vector<Source> sources, double grading);
   ~SpacingSources();
-  SpacingSources(SpacingSources&&) noexcept;
-  SpacingSources& operator=(SpacingSources&&) noexcept;
+  SpacingSources(const SpacingSources&) = delete;  // held by pointer (FaceSpacingField)
+  SpacingSources& operator=(const SpacingSources&) = delete;
 
   bool empty() const { return count_ == 0; }
   double finest() const { return finest_; }  // smallest source spacing (+inf if none)

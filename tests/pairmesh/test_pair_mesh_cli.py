@@ -31,21 +31,17 @@ PUBLIC_MAX_BYTES = 250_000
 # sampled again finer (cli/solid_run.hpp). The lever (2 inverted at its
 # zero-angle cusp) and NIST CTC-01 (2 where facets bridge a 15 mm step) were,
 # until faces were graded from finer convex edges (2026-12-02); with those
-# samples both were valid at once. Since that grading is exact at every point
-# (not only at the field's nodes, same day) the lever has 1 inverted element
-# at its default h again and is valid at 0.97 h; CTC-01 stays valid at once.
-# The repair is held to them at one spacing per face in
-# test_public_models_at_other_spacings too.
-RESAMPLED_AT_DEFAULT = {"bm2_ec_lever-A.stp"}
+# samples both are valid at once. The repair is held to them at one spacing
+# per face in test_public_models_at_other_spacings too.
+RESAMPLED_AT_DEFAULT = set()
 # Known gap (ARCHITECTURE.md, "Pair-mesh: the rounded iso-surface"): whether
 # sliver elements make the exact iso-surface at t = 0.5 cut itself depends on
 # the samples too. On the lever, one spacing per face gives 0 crossing pairs
 # at h = 8.6 and 7 at 9.0; graded (faces graded from finer convex edges,
 # 2026-12-02) 14 at its default h, 0 at 0.97 h and 1.03 h, 3 at 0.94 h, all
 # 14 between elements on two boundary edges the repair split (before that
-# grading: 4 at its default, kept at 0.97 h; with the grading exact at every
-# point, 4 at the kept 0.97 h). Held to at most this many; every other model
-# to 0.
+# grading: 4 at its default, kept at 0.97 h). Held to at most this many;
+# every other model to 0.
 ISO_CROSSINGS_ALLOWED = {"bm2_ec_lever-A.stp": 14}
 # Every model run here (NIST CTC-01 included since 2026-12-01: its last 5
 # inverted elements went with 8 outer cells relabelled inner; bottle.brep,

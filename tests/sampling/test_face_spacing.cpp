@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <random>
 #include <tuple>
 #include <vector>
 
@@ -40,6 +41,7 @@
 
 #include "cadmedial/sampling.hpp"
 #include "face_spacing_field.hpp"
+#include "spacing_sources.hpp"
 
 namespace cadmedial {
 namespace {
@@ -218,7 +220,8 @@ TEST(FaceSpacing, FaceIsGradedFromAFinerConvexEdge) {
             .Shape();
     const GradedSamples graded = sampleGraded(plate, h);
     const Dt& dt = graded.dt;
-    const double rimSpacing = 0.15 * radius;  // at most: the edge takes the finest of its faces and its curvature
+    // At most: the edge takes the finest of its faces and its curvature, never below the floor h / 16.
+    const double rimSpacing = std::max(0.15 * radius, h / 16);
     double worst = 0;  // hole / allowed, on the top face around the rim (beyond its triplet legs)
     for (double rho = radius + 1; rho <= radius + 6; rho += 0.25)
       for (int k = 0; k < 96; ++k) {
@@ -241,10 +244,41 @@ TEST(FaceSpacing, FaceIsGradedFromAFinerConvexEdge) {
                 side, h, graded.samples.size(), worst, nearRim, farAway);
     EXPECT_LE(worst, 1.0) << "plate " << side;
     EXPECT_GT(nearRim, 0) << "plate " << side;  // samples there at all
-    // The grading allows 0.75 + 0.5 × 3.5 = 2.5 at the band's far side.
-    EXPECT_LT(nearRim, 2.5) << "plate " << side;  // ungraded: 2.4 at h 3 (measured), the Poisson spacing of h
+    // The grading allows 0.75 + 0.5 × 3.5 = 2.5 at the band's far side;
+    // ungraded, 2.4 at h 3 (measured), the Poisson spacing of h.
+    EXPECT_LT(nearRim, std::min(2.5, 0.6 * h)) << "plate " << side;
     EXPECT_GT(farAway, 2 * nearRim) << "plate " << side;
   }
+}
+
+// The k-d tree search with its early stop against the plain minimum over
+// every source, on random sources of mixed spacings (clustered, as points
+// along edges are) and random queries with and without slack.
+TEST(SpacingSources, NearestFirstSearchMatchesTheMinimumOverAllSources) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> coordinate(-50, 50), spacing(0.2, 3), slack(0, 10), cap(1, 20);
+  std::vector<SpacingSources::Source> sources;
+  for (int edge = 0; edge < 40; ++edge) {
+    const gp_Pnt a(coordinate(rng), coordinate(rng), coordinate(rng));
+    const gp_Pnt b(a.X() + 0.2 * coordinate(rng), a.Y() + 0.2 * coordinate(rng), a.Z() + 0.2 * coordinate(rng));
+    const double s = spacing(rng);
+    for (int i = 0; i <= 25; ++i)
+      sources.push_back({gp_Pnt(a.XYZ() + (b.XYZ() - a.XYZ()) * (i / 25.0)), s});
+  }
+  const double grading = 0.5;
+  const SpacingSources tree(sources, grading);
+  int lowered = 0;
+  for (int q = 0; q < 2000; ++q) {
+    const gp_Pnt p(coordinate(rng), coordinate(rng), coordinate(rng));
+    const double within = q % 2 == 0 ? 0.0 : slack(rng), upTo = cap(rng);
+    double expected = upTo;
+    for (const auto& source : sources)
+      expected = std::min(expected, source.spacing + grading * std::max(0.0, p.Distance(source.point) - within));
+    EXPECT_NEAR(tree.allowedNear(p, within, upTo), expected, 1e-12) << "query " << q;
+    lowered += expected < upTo;
+  }
+  EXPECT_GT(lowered, 200);  // the queries do reach the sources
+  EXPECT_EQ(SpacingSources({}, grading).allowedNear(gp_Pnt(0, 0, 0), 0, 4.0), 4.0);
 }
 
 // A pair-mesh that is not valid is sampled again, the second time with
