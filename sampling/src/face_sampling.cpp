@@ -47,10 +47,9 @@ struct TileRadius {
 // per disk of its smallest radius, so one whose radius comes from a finer
 // convex edge is split in four (Z order: the darts stay local) while it is
 // wider than kLeafRadii of its own radius (about 3 across its diagonal):
-// next to a hole's rim the spacing
-// grows by 0.5 per unit of distance, and a tile 32 of the rim's radii wide
-// threw darts for 0.45 over ground that needs 2.2 (twice the darts of the
-// whole face on the bundled flange, measured).
+// next to a hole's rim the spacing grows by 0.5 per unit of distance, and a
+// tile 32 of the rim's radii wide threw darts for 0.45 over ground that needs
+// 2.2 (twice the darts of the whole face on the bundled flange, measured).
 template <typename Measure, typename Visit>
 void forEachLeaf(const Tile& tile, int splits, const Measure& measure, const Visit& visit) {
   const TileRadius r = measure(tile);

@@ -160,9 +160,7 @@ FaceSpacingField::FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeI
   for (int j = 0; j < kCells; ++j)
     for (int i = 0; i < kCells; ++i) {
       const double du = (u1_ - u0_) / kCells, dv = (v1_ - v0_) / kCells;
-      const Ball ball = ballHolding(surf, u0_ + du * i, u0_ + du * (i + 1), v0_ + dv * j, v0_ + dv * (j + 1));
-      cellCentres_.push_back(ball.centre);
-      cellRadii_.push_back(ball.radius);
+      cellBalls_.push_back(ballHolding(surf, u0_ + du * i, u0_ + du * (i + 1), v0_ + dv * j, v0_ + dv * (j + 1)));
     }
   computeCells();
 }
@@ -188,7 +186,7 @@ void FaceSpacingField::gradeFrom(std::vector<Source> sources, double grading) {
   computeCells();
   sourceFloor_.resize(cells_.size());
   for (std::size_t c = 0; c < cells_.size(); ++c)
-    sourceFloor_[c] = sources_->allowedNear(cellCentres_[c], cellRadii_[c], cells_[c]);
+    sourceFloor_[c] = sources_->allowedNear(cellBalls_[c].centre, cellBalls_[c].radius, cells_[c]);
   minimum_ = std::min(minimum_, sources_->finest());
 }
 

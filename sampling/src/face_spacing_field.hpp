@@ -99,11 +99,10 @@ class FaceSpacingField {
   std::vector<double> nodes_;       // graded spacing at each node
   std::vector<std::array<double, 3>> probes_;  // thickness probes: u, v, spacing (graded only)
   std::vector<double> cells_;  // kCells², row-major in v: min of corners and probes
-  // Graded only: each cell's centre point and the radius of a ball about it
-  // that holds the cell, and the smallest spacing the sources allow in that
-  // ball (cells where it is no smaller than the cell's own skip the search).
-  std::vector<gp_Pnt> cellCentres_;
-  std::vector<double> cellRadii_;
+  // Graded only: a ball that holds each cell, and the smallest spacing the
+  // sources allow in it (cells where it is no smaller than the cell's own
+  // skip the search).
+  std::vector<Ball> cellBalls_;
   std::vector<double> sourceFloor_;
   std::unique_ptr<SpacingSources> sources_;
   double minimum_ = 0, maximum_ = 0;

@@ -28,7 +28,6 @@ struct SpacingSources::Tree {
 
 SpacingSources::SpacingSources(std::vector<Source> sources, double grading)
     : tree_(std::make_unique<Tree>()),
-      count_(sources.size()),
       grading_(grading),
       finest_(std::numeric_limits<double>::infinity()) {
   std::vector<PointWithSpacing> points;
@@ -44,7 +43,7 @@ SpacingSources::SpacingSources(std::vector<Source> sources, double grading)
 SpacingSources::~SpacingSources() = default;
 
 double SpacingSources::allowedNear(const gp_Pnt& p, double slack, double upTo) const {
-  if (count_ == 0) return upTo;
+  if (tree_->tree.size() == 0) return upTo;
   double best = upTo;
   NearestFirst search(tree_->tree, Kernel::Point_3(p.X(), p.Y(), p.Z()), 0.0, true, Distance());
   for (auto it = search.begin(); it != search.end(); ++it) {

@@ -26,7 +26,6 @@ class SpacingSources {
   SpacingSources(const SpacingSources&) = delete;  // held by pointer (FaceSpacingField)
   SpacingSources& operator=(const SpacingSources&) = delete;
 
-  bool empty() const { return count_ == 0; }
   double finest() const { return finest_; }  // smallest source spacing (+inf if none)
 
   // min(upTo, min over sources of s + grading × max(0, |p - source| - slack)):
@@ -38,7 +37,6 @@ class SpacingSources {
  private:
   struct Tree;
   std::unique_ptr<Tree> tree_;
-  std::size_t count_ = 0;
   double grading_;
   double finest_;
 };
