@@ -300,29 +300,25 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
 std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance) {
   if (!(tolerance > 0)) return 0;
   const std::size_t n = m.nodes.size();
-  std::vector<Index> offsets(n + 1, 0), incident;
-  for (const auto& t : m.tets)
-    for (Index v : t) ++offsets[v + 1];
-  for (std::size_t v = 0; v < n; ++v) offsets[v + 1] += offsets[v];
-  incident.resize(offsets[n]);
-  {
-    std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
-    for (std::size_t i = 0; i < m.tets.size(); ++i)
-      for (Index v : m.tets[i]) incident[fill[v]++] = static_cast<Index>(i);
-  }
   // Clusters: nodes joined through elements by pairs closer than tolerance.
+  // Most nodes join none; only those that do are gathered, and only theirs
+  // is the incidence below (on the lever, 58 k lone nodes took half the
+  // weld's time).
   UnionFind joined(n);
+  std::vector<std::uint8_t> inPair(n, 0);
   const double limit = tolerance * tolerance;
   for (const auto& t : m.tets)
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b)
-        if (!m.isBoundaryNode(t[a]) && !m.isBoundaryNode(t[b]) && squaredLength(m.nodes[t[a]], m.nodes[t[b]]) <= limit)
+        if (!m.isBoundaryNode(t[a]) && !m.isBoundaryNode(t[b]) && squaredLength(m.nodes[t[a]], m.nodes[t[b]]) <= limit) {
           joined.unite(t[a], t[b]);
+          inPair[t[a]] = inPair[t[b]] = 1;
+        }
   std::vector<std::vector<Index>> clusters;
   {
     std::vector<Index> slot(n, kNoIndex);
     for (Index v = 0; v < n; ++v) {
-      if (m.isBoundaryNode(v)) continue;
+      if (!inPair[v]) continue;
       const Index r = joined.find(v);
       if (slot[r] == kNoIndex) {
         slot[r] = static_cast<Index>(clusters.size());
@@ -330,6 +326,19 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance) {
       }
       clusters[slot[r]].push_back(v);
     }
+  }
+  // Node -> incident elements (CSR), for the clustered nodes only.
+  std::vector<Index> offsets(n + 1, 0), incident;
+  for (const auto& t : m.tets)
+    for (Index v : t)
+      if (inPair[v]) ++offsets[v + 1];
+  for (std::size_t v = 0; v < n; ++v) offsets[v + 1] += offsets[v];
+  incident.resize(offsets[n]);
+  {
+    std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
+    for (std::size_t i = 0; i < m.tets.size(); ++i)
+      for (Index v : m.tets[i])
+        if (inPair[v]) incident[fill[v]++] = static_cast<Index>(i);
   }
   std::vector<std::uint32_t> seen(m.tets.size(), 0);
   std::uint32_t stamp = 0;

@@ -1,0 +1,23 @@
+// Private to core: a dense simplex for the tiny linear programs of the
+// pair-mesh repair (4 unknowns, a few dozen rows), in doubles.
+//
+// CGAL's exact LP solver answers them too, but at about 0.2 ms each it was
+// most of the repair time on the bundled models. Doubles are enough where
+// the caller checks the answer with exact predicates anyway; when this
+// solver is not sure (too many pivots, a pivot too small to trust) it says
+// so and the caller can fall back to the exact solver.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace cadmedial {
+
+// Maximizes c . x subject to A x <= b and x >= 0 (A: rows x c.size(),
+// row-major). Returns the optimal x, or nullopt when the program is
+// infeasible, unbounded, or not solved with confidence.
+std::optional<std::vector<double>> maximizeSmallLp(const std::vector<double>& A, const std::vector<double>& b,
+                                                   const std::vector<double>& c);
+
+}  // namespace cadmedial
