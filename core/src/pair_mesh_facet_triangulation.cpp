@@ -108,7 +108,7 @@ std::pair<std::vector<std::array<Index, 3>>, Score> bestTriangulation(const std:
 
 }  // namespace
 
-std::size_t retriangulateFaceVertexPolygons(PairMesh& m, const std::vector<std::uint8_t>* needsRepair) {
+std::size_t retriangulateFaceVertexPolygons(PairMesh& m, std::vector<std::uint8_t>* needsRepair) {
   // Only the polygons holding a bad element, each with its element slots.
   std::unordered_map<std::uint64_t, std::vector<std::size_t>> slots;
   for (std::size_t i = 0; i < m.tets.size(); ++i)
@@ -146,6 +146,8 @@ std::size_t retriangulateFaceVertexPolygons(PairMesh& m, const std::vector<std::
       m.boundarySimplex[elements[2 * t]] = {a, kNoIndex, kNoIndex};
       m.boundarySimplex[elements[2 * t + 1]] = {b, kNoIndex, kNoIndex};
     }
+    if (needsRepair)
+      for (std::size_t i : elements) (*needsRepair)[i] = elementNeedsRepair(m.nodes, m.tets[i]) ? 1 : 0;
     ++changed;
   }
   return changed;

@@ -21,7 +21,8 @@ namespace cadmedial {
 // size (dynamic programming over the polygon, O(k^3)), and keeps it when it
 // has fewer bad elements than the current one. Element slots stay the same.
 // Returns the number of polygons re-triangulated. needsRepair: per element,
-// whether it needs repair, when the caller keeps that current (else tested).
-std::size_t retriangulateFaceVertexPolygons(PairMesh& mesh, const std::vector<std::uint8_t>* needsRepair = nullptr);
+// whether it needs repair, when the caller keeps that current (else tested);
+// updated for the elements rewritten, so the caller need not test all again.
+std::size_t retriangulateFaceVertexPolygons(PairMesh& mesh, std::vector<std::uint8_t>* needsRepair = nullptr);
 
 }  // namespace cadmedial
