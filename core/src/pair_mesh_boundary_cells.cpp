@@ -1,4 +1,5 @@
 #include "pair_mesh_boundary_cells.hpp"
+#include "pair_mesh_element_checks.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -145,10 +146,7 @@ std::vector<Index> growKeepingEdgesManifold(const DelaunayVoronoi& dv, const std
 }  // namespace
 
 std::vector<std::size_t> invertedElements(const PairMesh& mesh) {
-  std::vector<std::size_t> elements;
-  for (std::size_t i = 0; i < mesh.size(); ++i)
-    if (isInverted(mesh, i)) elements.push_back(i);
-  return elements;
+  return selectElements(mesh.size(), [&](std::size_t i) { return isInverted(mesh, i); });
 }
 
 std::vector<Index> boundaryCellsOfElements(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,

@@ -97,17 +97,22 @@ class EdgeSplitter {
 
  private:
   // Boundary edges {a, b} (a < b) with a negative Edge-Edge element, and all
-  // the Edge-Edge elements of those edges.
+  // the Edge-Edge elements of those edges. The search for negative ones is
+  // parallel; the passes after it look up an element's edges only when its
+  // nodes are ends of such an edge (a few dozen of 100 k samples), since
+  // these passes over every element ran on every repair and trial.
   void collectEdges() {
-    std::vector<std::uint64_t> bad;
+    const std::vector<std::size_t> negative = selectElements(m_.size(), [&](std::size_t i) {
+      return m_.type[i] == PairElementType::EdgeEdge && isInverted(m_, i);
+    });
+    if (negative.empty()) return;
+    edgeEnd_.assign(m_.nodes.size(), 0);
+    for (std::size_t i : negative) {
+      edges_[key(m_.tets[i][0], m_.tets[i][1])];
+      edgeEnd_[m_.tets[i][0]] = edgeEnd_[m_.tets[i][1]] = 1;
+    }
     for (std::size_t i = 0; i < m_.size(); ++i)
-      if (m_.type[i] == PairElementType::EdgeEdge && isInverted(m_, i))
-        bad.push_back(key(m_.tets[i][0], m_.tets[i][1]));
-    std::sort(bad.begin(), bad.end());
-    bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
-    for (std::uint64_t k : bad) edges_[k];
-    for (std::size_t i = 0; i < m_.size(); ++i)
-      if (m_.type[i] == PairElementType::EdgeEdge) {
+      if (m_.type[i] == PairElementType::EdgeEdge && edgeEnd_[m_.tets[i][0]] && edgeEnd_[m_.tets[i][1]]) {
         auto it = edges_.find(key(m_.tets[i][0], m_.tets[i][1]));
         if (it != edges_.end()) it->second.push_back(i);
       }
@@ -118,6 +123,7 @@ class EdgeSplitter {
     for (std::size_t i = 0; i < m_.size(); ++i) {
       if (m_.type[i] != PairElementType::VertexFace) continue;
       const auto& t = m_.tets[i];
+      if (edgeEnd_[t[1]] + edgeEnd_[t[2]] + edgeEnd_[t[3]] < 2) continue;
       bool touches = false;
       for (int k = 0; k < 3; ++k) touches |= edges_.count(key(t[1 + k], t[1 + (k + 1) % 3])) > 0;
       if (!touches) continue;
@@ -360,6 +366,7 @@ class EdgeSplitter {
 
   PairMesh& m_;
   std::map<std::uint64_t, std::vector<std::size_t>> edges_;  // ordered: the same splits on every run
+  std::vector<std::uint8_t> edgeEnd_;  // per node: an end of one of edges_
   std::vector<BoundaryPolygon> polygons_;
   std::unordered_map<std::uint64_t, std::vector<std::size_t>> polygonsOfEdge_;
   std::vector<std::size_t> removed_;

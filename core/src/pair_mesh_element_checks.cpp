@@ -5,6 +5,7 @@
 #include <functional>
 
 #include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
 namespace cadmedial {
@@ -28,6 +29,17 @@ std::size_t countElements(std::size_t count, const std::function<bool(std::size_
         return n;
       },
       std::plus<std::size_t>());
+}
+
+std::vector<std::size_t> selectElements(std::size_t count, const std::function<bool(std::size_t)>& test) {
+  std::vector<std::uint8_t> passes(count, 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) passes[i] = test(i) ? 1 : 0;
+  });
+  std::vector<std::size_t> selected;
+  for (std::size_t i = 0; i < count; ++i)
+    if (passes[i]) selected.push_back(i);
+  return selected;
 }
 
 bool hasCoincidentCorners(const std::vector<Vec3>& nodes, const std::array<Index, 4>& t) {

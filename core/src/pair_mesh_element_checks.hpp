@@ -22,6 +22,10 @@ std::size_t countElementsNeedingRepair(const std::vector<Vec3>& nodes, const std
 // every element several times per repair).
 std::size_t countElements(std::size_t count, const std::function<bool(std::size_t)>& test);
 
+// Those of 0 .. count-1 that pass `test`, in increasing order (tested in
+// parallel).
+std::vector<std::size_t> selectElements(std::size_t count, const std::function<bool(std::size_t)>& test);
+
 // Two corners at the same position (welded Voronoi nodes): exactly flat.
 // Tested before an orientation predicate, which would go to exact
 // arithmetic on every such element.
