@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <array>
 #include <vector>
 
 #include <gp_Pnt2d.hxx>
@@ -26,7 +27,10 @@ struct SamplingContext {
   bool gradedSpacing = true;  // SamplingParams::gradedSpacing
   double boundsScale = 1.0;   // SamplingParams::boundsScale
   std::vector<FaceSpacingField> faceSpacing;  // per face: one value, or graded over its UV box
-  std::vector<double> edgeSpacing;   // per edge (target)
+  std::vector<double> edgeSpacing;   // per edge (target; its smallest along it)
+  // Per edge: (arc length from its first vertex, spacing) along it where the
+  // spacing varies (graded faces finer near one end); empty: even at edgeSpacing.
+  std::vector<std::vector<std::array<double, 2>>> edgeSpacingAlong;
   std::vector<double> cornerRadius;  // per vertex: corner-ball radius (0: no ball)
   std::vector<Index> vertexSample;   // per vertex: its sample
   std::vector<std::vector<double>> edgeParams;  // per edge: curve parameter of each sample in SampleSet::edges[e].samples
