@@ -45,6 +45,13 @@ std::optional<std::array<double, 4>> solveInDoubles(const ChebyshevProgram& prog
   }
   const auto x = maximizeSmallLp(A, b, {0, 0, 0, -1});
   if (!x) return std::nullopt;
+  // Rounding in the pivots is not bounded: an answer that breaks a row by
+  // more than 1e-9 (rows are normalized) goes to the exact solver.
+  for (std::size_t r = 0; r < b.size(); ++r) {
+    double lhs = 0;
+    for (int k = 0; k < 4; ++k) lhs += A[4 * r + k] * (*x)[k];
+    if (!(lhs <= b[r] + 1e-9 * (1 + std::abs(b[r])))) return std::nullopt;
+  }
   return std::array<double, 4>{(*x)[0] - 1, (*x)[1] - 1, (*x)[2] - 1, 1 - (*x)[3]};
 }
 
@@ -111,7 +118,8 @@ std::optional<Vec3> nearestValidNodePosition(const std::vector<Vec3>& nodes, Ind
   }
   if (program.b.empty()) return std::nullopt;
   auto solution = solveInDoubles(program);
-  if (!solution) solution = solveExactly(program);
+  // No margin in doubles may be rounding: the exact solver has the last word.
+  if (!solution || !((*solution)[3] > 1e-9)) solution = solveExactly(program);
   if (!solution) return std::nullopt;
   const auto& q = *solution;
   const double margin = q[3];

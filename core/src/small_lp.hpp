@@ -3,9 +3,10 @@
 //
 // CGAL's exact LP solver answers them too, but at about 0.2 ms each it was
 // most of the repair time on the bundled models. Doubles are enough where
-// the caller checks the answer with exact predicates anyway; when this
-// solver is not sure (too many pivots, a pivot too small to trust) it says
-// so and the caller can fall back to the exact solver.
+// the caller checks the answer with exact predicates anyway. Coefficients
+// below 1e-11 are taken as zero (never pivoted on) and rounding is not
+// bounded, so the caller checks the rows it gets back; after 1000 pivots
+// the solver gives up, and the caller can fall back to the exact solver.
 #pragma once
 
 #include <cstddef>

@@ -55,7 +55,8 @@ double edgeSpacingAt(const SamplingContext& ctx, int e, int v) {
 std::vector<double> sampleArcs(const std::vector<std::array<double, 2>>& profile, double even, double from,
                                double inner) {
   const double to = from + inner;
-  if (profile.size() < 2 || !(inner > 0)) {
+  const bool positive = std::all_of(profile.begin(), profile.end(), [](const auto& p) { return p[1] > 0; });
+  if (profile.size() < 2 || !(inner > 0) || !positive) {
     const int segments = std::max(1, static_cast<int>(std::ceil(inner / even - 1e-9)));
     const double step = inner / segments;
     std::vector<double> arcs;
@@ -164,7 +165,9 @@ void computeSpacings(SamplingContext& ctx) {
       BRepAdaptor_Curve curve(topo.edge(e));
       const double length = ctx.edgeFeatures[e].length;
       // Points where the fields are read: 17 evenly in the parameter, or
-      // when following them, evenly in arc length, about h/2 apart.
+      // when following them, evenly in arc length, about h/2 apart (so an
+      // edge's smallest value can differ a little between the passes even
+      // where it does not vary much).
       const int n = along ? static_cast<int>(std::clamp(std::ceil(2 * length / ctx.spacing), 16.0, 256.0)) : 16;
       std::vector<double> params(n + 1), spacing(n + 1, curvature);
       for (int i = 0; i <= n; ++i)

@@ -9,6 +9,7 @@
 #include <CGAL/QP_models.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "small_lp.hpp"
@@ -40,9 +41,9 @@ double value(const Program& p, const std::vector<double>& x) {
   return v;
 }
 
-// x is feasible up to rounding.
+// x is feasible up to rounding (x >= 0 holds by construction: the solver
+// clamps its basic values at 0; the rows check what that clamp could hide).
 void expectFeasible(const Program& p, const std::vector<double>& x) {
-  for (std::size_t j = 0; j < p.n; ++j) EXPECT_GE(x[j], 0);
   for (std::size_t r = 0; r < p.b.size(); ++r) {
     double lhs = 0, scale = std::abs(p.b[r]);
     for (std::size_t j = 0; j < p.n; ++j) {
@@ -95,7 +96,7 @@ TEST(SmallLp, MatchesTheExactSolverOnProgramsOfTheRepair) {
 TEST(SmallLp, MatchesTheExactSolverOnGeneralPrograms) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> coefficient(-1, 1), bound(-0.5, 2);
-  int optimal = 0, solved = 0;
+  int optimal = 0, solved = 0, refused = 0;
   for (int trial = 0; trial < 400; ++trial) {
     Program p;
     p.n = 2 + trial % 5;
@@ -105,14 +106,16 @@ TEST(SmallLp, MatchesTheExactSolverOnGeneralPrograms) {
       p.b.push_back(bound(rng));  // negative: x = 0 infeasible, phase one
     }
     for (std::size_t j = 0; j < p.n; ++j) {  // a box keeps most bounded
+      if (trial % 7 == 0 && j == 0) continue;  // x0 free above: sometimes unbounded
       for (std::size_t k = 0; k < p.n; ++k) p.A.push_back(k == j ? 1 : 0);
-      p.b.push_back(trial % 7 == 0 && j == 0 ? 1e30 : 3);  // sometimes unbounded
+      p.b.push_back(3);
     }
     for (std::size_t j = 0; j < p.n; ++j) p.c.push_back(coefficient(rng));
     const auto exact = exactOptimum(p);
     const auto x = maximizeSmallLp(p.A, p.b, p.c);
     if (!exact) {
       EXPECT_FALSE(x.has_value()) << "trial " << trial;  // infeasible or unbounded
+      ++refused;
       continue;
     }
     ++optimal;
@@ -121,8 +124,9 @@ TEST(SmallLp, MatchesTheExactSolverOnGeneralPrograms) {
     expectFeasible(p, *x);
     EXPECT_NEAR(value(p, *x), *exact, 1e-9 * (1 + std::abs(*exact))) << "trial " << trial;
   }
+  std::printf("general programs: %d optimal, %d infeasible or unbounded, %d solved in doubles\n", optimal, refused, solved);
   EXPECT_GE(optimal, 100);  // the test exercises both kinds
-  EXPECT_LE(optimal, 390);
+  EXPECT_GE(refused, 10);
   EXPECT_GE(solved, optimal - 2);
 }
 
