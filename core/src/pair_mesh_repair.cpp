@@ -61,6 +61,23 @@ double negligibleVolume(const PairMesh& m, std::size_t i) {
 
 namespace {
 
+// Node -> incident elements (CSR: incident[offsets[v] .. offsets[v + 1]]),
+// for the nodes `keep` accepts only (the others get empty ranges).
+template <typename Keep>
+void buildIncidenceOf(const PairMesh& m, Keep keep, std::vector<Index>& offsets, std::vector<Index>& incident) {
+  const std::size_t n = m.nodes.size();
+  offsets.assign(n + 1, 0);
+  for (const auto& t : m.tets)
+    for (Index v : t)
+      if (keep(v)) ++offsets[v + 1];
+  for (std::size_t v = 0; v < n; ++v) offsets[v + 1] += offsets[v];
+  incident.resize(offsets[n]);
+  std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
+  for (std::size_t i = 0; i < m.tets.size(); ++i)
+    for (Index v : m.tets[i])
+      if (keep(v)) incident[fill[v]++] = static_cast<Index>(i);
+}
+
 std::size_t countNegative(const PairMesh& m) {
   return countElements(m.tets.size(), [&](std::size_t i) { return isInverted(m, i); });
 }
@@ -87,16 +104,7 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
   // Only the Voronoi nodes': boundary nodes never move (a third fewer
   // entries; this pass was the costliest step left on the lever).
   auto buildIncidence = [&]() {
-    offsets.assign(n + 1, 0);
-    for (const auto& t : m.tets)
-      for (Index v : t)
-        if (!m.isBoundaryNode(v)) ++offsets[v + 1];
-    for (std::size_t v = 0; v < n; ++v) offsets[v + 1] += offsets[v];
-    incident.resize(offsets[n]);
-    std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
-    for (std::size_t i = 0; i < m.tets.size(); ++i)
-      for (Index v : m.tets[i])
-        if (!m.isBoundaryNode(v)) incident[fill[v]++] = static_cast<Index>(i);
+    buildIncidenceOf(m, [&m](Index v) { return !m.isBoundaryNode(v); }, offsets, incident);
   };
   auto negativeAround = [&](Index v, double* deficit) {
     std::size_t count = 0;
@@ -334,18 +342,8 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance) {
     }
   }
   // Node -> incident elements (CSR), for the clustered nodes only.
-  std::vector<Index> offsets(n + 1, 0), incident;
-  for (const auto& t : m.tets)
-    for (Index v : t)
-      if (inPair[v]) ++offsets[v + 1];
-  for (std::size_t v = 0; v < n; ++v) offsets[v + 1] += offsets[v];
-  incident.resize(offsets[n]);
-  {
-    std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
-    for (std::size_t i = 0; i < m.tets.size(); ++i)
-      for (Index v : m.tets[i])
-        if (inPair[v]) incident[fill[v]++] = static_cast<Index>(i);
-  }
+  std::vector<Index> offsets, incident;
+  buildIncidenceOf(m, [&inPair](Index v) { return inPair[v] != 0; }, offsets, incident);
   std::vector<std::uint32_t> seen(m.tets.size(), 0);
   std::uint32_t stamp = 0;
   auto badAroundSet = [&](const std::vector<Index>& set) {
