@@ -9,7 +9,13 @@
 // triangles on ab become polygons a m b ..., re-triangulated into Vertex-Face
 // elements on the same Voronoi node. Faces stay shared pairwise, so the
 // signed volumes still add up to the volume inside the (slightly bent)
-// boundary.
+// boundary. The bent boundary must not fold through its neighbours: where
+// the solid is thinner than the bend (a knife edge between tangent faces,
+// 0.005 mm thick on bm2_ec_lever-A where the split was needed), m would end
+// up beyond the other side, the boundary would enclose a sliver twice, and
+// the iso-surfaces would cross there although every element is positive. So
+// no triangle of the new triangulations may cross a boundary triangle near
+// the edge (trianglesCross); a split with none that fits is not made.
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +26,7 @@
 #include "cadmedial/pair_mesh.hpp"
 #include "pair_mesh_edit.hpp"
 #include "pair_mesh_element_checks.hpp"
+#include "triangle_crossing.hpp"
 
 namespace cadmedial {
 
@@ -89,6 +96,7 @@ class EdgeSplitter {
     collectEdges();
     if (edges_.empty()) return 0;
     collectPolygons();
+    collectNearbyTriangles();
     std::size_t split = 0;
     for (const auto& [key, ee] : edges_) split += trySplit(key, ee) ? 1 : 0;
     if (split > 0) rebuild();
@@ -140,6 +148,68 @@ class EdgeSplitter {
     }
   }
 
+  // The other boundary triangles a bent edge could fold through: those whose
+  // boxes meet an edge's polygons' box grown by the edge's length (a split
+  // node stays within the edge's length of its midpoint).
+  void collectNearbyTriangles() {
+    std::vector<Box> regions;
+    for (const auto& [edgeKey, ee] : edges_) {
+      const auto it = polygonsOfEdge_.find(edgeKey);
+      if (it == polygonsOfEdge_.end() || ee.empty()) continue;
+      Box b;
+      for (std::size_t q : it->second)
+        for (Index c : polygons_[q].corners) b.add(m_.nodes[c]);
+      const Vec3 &pa = m_.nodes[m_.tets[ee[0]][0]], &pb = m_.nodes[m_.tets[ee[0]][1]];
+      b.grow(1.001 * std::sqrt((pa[0] - pb[0]) * (pa[0] - pb[0]) + (pa[1] - pb[1]) * (pa[1] - pb[1]) +
+                       (pa[2] - pb[2]) * (pa[2] - pb[2])));
+      regions.push_back(b);
+    }
+    std::vector<std::uint8_t> inPolygon(m_.size(), 0);
+    for (const BoundaryPolygon& p : polygons_)
+      for (std::size_t e : p.elements) inPolygon[e] = 1;
+    for (std::size_t i = 0; i < m_.size(); ++i) {
+      if (m_.type[i] != PairElementType::VertexFace || inPolygon[i]) continue;
+      const std::array<Index, 3> tri{m_.tets[i][1], m_.tets[i][2], m_.tets[i][3]};
+      const Box b = boxOf(tri);
+      if (std::any_of(regions.begin(), regions.end(), [&](const Box& r) { return r.meets(b); }))
+        nearby_.push_back(tri);
+    }
+  }
+
+  struct Box {
+    Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+    void add(const Vec3& p) {
+      for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+    }
+    void grow(double d) {
+      for (int a = 0; a < 3; ++a) lo[a] -= d, hi[a] += d;
+    }
+    bool meets(const Box& o) const {
+      for (int a = 0; a < 3; ++a)
+        if (o.hi[a] < lo[a] || hi[a] < o.lo[a]) return false;
+      return true;
+    }
+  };
+  Box boxOf(const std::array<Index, 3>& t) const {
+    Box b;
+    for (Index n : t) b.add(m_.nodes[n]);
+    return b;
+  }
+
+  // Does triangle t of a new triangulation cross a boundary triangle near the
+  // edge, a current triangle of another polygon (not p0, p1: being replaced)
+  // or one of `also`?
+  bool folds(const std::array<Index, 3>& t, const BoundaryPolygon& p0, const BoundaryPolygon& p1,
+             const std::vector<std::array<Index, 3>>& also) const {
+    const Box b = boxOf(t);
+    auto crosses = [&](const std::array<Index, 3>& u) { return b.meets(boxOf(u)) && trianglesCross(m_.nodes, t, u); };
+    if (std::any_of(nearby_.begin(), nearby_.end(), crosses) || std::any_of(also.begin(), also.end(), crosses))
+      return true;
+    for (const BoundaryPolygon& q : polygons_)
+      if (&q != &p0 && &q != &p1 && std::any_of(q.triangles.begin(), q.triangles.end(), crosses)) return true;
+    return false;
+  }
+
   static std::uint64_t key(Index a, Index b) {
     if (a > b) std::swap(a, b);
     return (static_cast<std::uint64_t>(a) << 32) | b;
@@ -165,11 +235,25 @@ class EdgeSplitter {
   }
 
   // Best triangulation of an outline coned to apex, and its score, without
-  // the triangles in `forbidden` (see earsOfPartners).
+  // the triangles in `forbidden` (see earsOfPartners) and without folds
+  // (folds(), against the polygons p0, p1 of the edge being split and
+  // `also`; nor within the triangulation). kNone when no triangulation fits.
+  static constexpr std::size_t kNone = ~std::size_t{0};
   Score bestTriangulation(const BoundaryPolygon& p, const std::vector<Index>& o,
-                          std::vector<std::array<Index, 3>>* out, const std::vector<TriangleKey>& forbidden) const {
-    Score best{~std::size_t{0}, 0};
+                          std::vector<std::array<Index, 3>>* out, const std::vector<TriangleKey>& forbidden,
+                          const BoundaryPolygon& p0, const BoundaryPolygon& p1,
+                          const std::vector<std::array<Index, 3>>& also) const {
+    Score best{kNone, 0};
     std::vector<std::array<Index, 3>> chosen;
+    std::vector<std::pair<TriangleKey, bool>> foldsOf;  // memo: a polygon of n <= 6 has at most 20 triangles
+    auto triangleFolds = [&](const std::array<Index, 3>& t) {
+      const TriangleKey k = sortedKey(t[0], t[1], t[2]);
+      for (const auto& [key, f] : foldsOf)
+        if (key == k) return f;
+      const bool f = folds(t, p0, p1, also);
+      foldsOf.emplace_back(k, f);
+      return f;
+    };
     for (const Triangulation& tr : triangulationsOf(static_cast<int>(o.size()))) {
       const bool allowed = std::none_of(tr.begin(), tr.end(), [&](const std::array<int, 3>& t) {
         const TriangleKey k = sortedKey(o[t[0]], o[t[1]], o[t[2]]);
@@ -178,10 +262,17 @@ class EdgeSplitter {
       if (!allowed) continue;
       Score s;
       for (const auto& t : tr) addToScore(s, m_.nodes, {p.apex, o[t[0]], o[t[1]], o[t[2]]});
-      if (s < best) {
+      if (!(s < best)) continue;
+      std::vector<std::array<Index, 3>> triangles;
+      for (const auto& t : tr) triangles.push_back({o[t[0]], o[t[1]], o[t[2]]});
+      bool fits = true;
+      for (std::size_t i = 0; i < triangles.size() && fits; ++i) {
+        fits = !triangleFolds(triangles[i]);
+        for (std::size_t j = 0; j < i && fits; ++j) fits = !trianglesCross(m_.nodes, triangles[i], triangles[j]);
+      }
+      if (fits) {
         best = s;
-        chosen.clear();
-        for (const auto& t : tr) chosen.push_back({o[t[0]], o[t[1]], o[t[2]]});
+        chosen = std::move(triangles);
       }
     }
     if (out) *out = std::move(chosen);
@@ -269,6 +360,25 @@ class EdgeSplitter {
     return out;
   }
 
+  // Both polygons of edge ab re-triangulated with split node m on it (p0's
+  // first, p1's not folding through it nor repeating its ear a m b); their
+  // scores are added to `score`. Returns p0's and p1's score summed, with
+  // negative = kNone when either has no triangulation that fits.
+  Score triangulateBoth(const BoundaryPolygon& p0, int k0, const BoundaryPolygon& p1, int k1, Index m,
+                        std::vector<std::array<Index, 3>>* tri0, std::vector<std::array<Index, 3>>* tri1,
+                        Score& score) const {
+    const Index a = p0.corners[k0], b = p0.corners[(k0 + 1) % 3];
+    const Score s0 = bestTriangulation(p0, outline(p0, k0, m), tri0, earsOfPartners(p0), p0, p1, {});
+    if (s0.negative == kNone) return s0;
+    std::vector<TriangleKey> forbidden1 = earsOfPartners(p1);
+    if (hasTriangle(*tri0, sortedKey(a, m, b))) forbidden1.push_back(sortedKey(a, m, b));
+    const Score s1 = bestTriangulation(p1, outline(p1, k1, m), tri1, forbidden1, p0, p1, *tri0);
+    if (s1.negative == kNone) return s1;
+    score.negative += s0.negative + s1.negative;
+    score.deficit += s0.deficit + s1.deficit;
+    return {s0.negative + s1.negative, s0.deficit + s1.deficit};
+  }
+
   bool trySplit(std::uint64_t edgeKey, const std::vector<std::size_t>& ee) {
     auto pit = polygonsOfEdge_.find(edgeKey);
     if (pit == polygonsOfEdge_.end() || pit->second.size() != 2 || ee.empty()) return false;  // non-manifold
@@ -299,13 +409,7 @@ class EdgeSplitter {
         addToScore(s, m_.nodes, {m, t[1], t[2], t[3]});
       }
       std::vector<std::array<Index, 3>> tri0;
-      const Score s0 = bestTriangulation(p0, outline(p0, k0, m), &tri0, earsOfPartners(p0));
-      std::vector<TriangleKey> forbidden1 = earsOfPartners(p1);
-      if (hasTriangle(tri0, sortedKey(a, m, b)))
-        forbidden1.push_back(sortedKey(a, m, b));
-      const Score s1 = bestTriangulation(p1, outline(p1, k1, m), nullptr, forbidden1);
-      s.negative += s0.negative + s1.negative;
-      s.deficit += s0.deficit + s1.deficit;
+      if (triangulateBoth(p0, k0, p1, k1, m, &tri0, nullptr, s).negative == kNone) continue;  // every way to bend the boundary at c folds it
       if (s.negative < best.negative || (found && s < best)) {
         best = s;
         bestPoint = c;
@@ -318,8 +422,14 @@ class EdgeSplitter {
       return false;
     }
     // Keep it: the node, the two halves of each Edge-Edge element, the new
-    // triangulations of both polygons.
+    // triangulations of both polygons (the ones its score was made of).
     m_.nodes[m] = bestPoint;
+    std::vector<std::array<Index, 3>> tri0, tri1;
+    Score unused;
+    if (triangulateBoth(p0, k0, p1, k1, m, &tri0, &tri1, unused).negative == kNone) {
+      m_.nodes.pop_back();
+      return false;
+    }
     m_.nodeCell.push_back(kNoIndex);
     m_.boundaryNode.push_back(1);
     for (std::size_t i : ee) {
@@ -332,12 +442,13 @@ class EdgeSplitter {
     }
     p0.splits[k0] = m;
     p1.splits[k1] = m;
+    p0.triangles = std::move(tri0);
+    p1.triangles = std::move(tri1);
     for (BoundaryPolygon* p : {&p0, &p1}) {
       const std::size_t first = p->elements.front();
       const std::array<Index, 2> medial = m_.medialSimplex[first];
       const std::uint8_t linked = m_.onSheets[first];
       for (std::size_t e : p->elements) removed_.push_back(e);
-      bestTriangulation(*p, outline(*p), &p->triangles, earsOfPartners(*p));
       p->elements.clear();
       for (const auto& t : p->triangles) {
         p->elements.push_back(m_.tets.size());
@@ -369,6 +480,7 @@ class EdgeSplitter {
   std::vector<std::uint8_t> edgeEnd_;  // per node: an end of one of edges_
   std::vector<BoundaryPolygon> polygons_;
   std::unordered_map<std::uint64_t, std::vector<std::size_t>> polygonsOfEdge_;
+  std::vector<std::array<Index, 3>> nearby_;  // boundary triangles near edges_, not in polygons_
   std::vector<std::size_t> removed_;
 };
 
