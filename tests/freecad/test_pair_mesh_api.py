@@ -183,8 +183,9 @@ def main():
                                            progress=lambda s, i, n: stop.set() if s == "medial" else None),
                  cadmedial.Cancelled, "cancel", "cancel before the pair-mesh stage")
 
-    # --- sampled again (cli/solid_run.hpp): the lever at h = 8.93 with one spacing per face keeps 1
-    # inverted element at h and at 0.97 h and is valid with every spacing x 0.94 (the CLI test
+    # --- sampled again (cli/solid_run.hpp): the lever at h = 10 with one spacing per face keeps 1
+    # inverted element at h and at 0.97 h and is valid with every spacing x 0.94 (h = 8.93 until the
+    # edge split stopped folding the boundary, 2026-12-03: valid at once since; the CLI test
     # test_not_valid_at_the_spacing_asked_samples_again_finer holds the same); the stages come
     # again per sampling, and a cancel there still stops. (Graded at its default spacing the lever
     # needed 0.97 h until faces were graded from finer convex edges; it is valid at once now.)
@@ -196,7 +197,7 @@ def main():
             stages.append(stage)
             stamps.append(time.perf_counter())
 
-        options = dict(spacing=8.93, graded_spacing=False, pair_mesh=True, check_inside=False)
+        options = dict(spacing=10.0, graded_spacing=False, pair_mesh=True, check_inside=False)
         (axis,) = cadmedial.compute(lever, progress=note_stage, **options)
         attempts = axis.pair_mesh.report["attempts"]
         check(stages == ["read"] + ["sample", "medial", "pair_mesh"] * 3 + ["done"], f"lever: stages {stages}")
@@ -205,7 +206,7 @@ def main():
         check(seconds["end_to_end"] >= stamps[-2] - stamps[1] > seconds["total"],
               f"lever: end_to_end {seconds} spans every sampling ({stamps[-2] - stamps[1]:.2f} s)")
         check([a["valid"] for a in attempts] == [False, False, True] and attempts[2]["kept"]
-              and attempts[2]["every_spacing"] and abs(axis.spacing - 0.94 * 8.93) < 1e-9 * axis.spacing
+              and attempts[2]["every_spacing"] and abs(axis.spacing - 0.94 * 10.0) < 1e-9 * axis.spacing
               and axis.pair_mesh.valid,
               f"lever: sampled again with every spacing x 0.94 and kept, valid: {attempts}")
         samplings = [0]
