@@ -26,6 +26,7 @@
 #include "cadmedial/pair_mesh.hpp"
 #include "pair_mesh_edit.hpp"
 #include "pair_mesh_element_checks.hpp"
+#include "point_box.hpp"
 #include "triangle_crossing.hpp"
 
 namespace cadmedial {
@@ -152,17 +153,17 @@ class EdgeSplitter {
   // boxes meet an edge's polygons' box grown by the edge's length (a split
   // node stays within the edge's length of its midpoint).
   void collectNearbyTriangles() {
-    std::vector<Box> regions;
+    std::vector<PointBox> regions;
     for (const auto& [edgeKey, ee] : edges_) {
       const auto it = polygonsOfEdge_.find(edgeKey);
       if (it == polygonsOfEdge_.end() || ee.empty()) continue;
-      Box b;
+      std::vector<Vec3> corners;
       for (std::size_t q : it->second)
-        for (Index c : polygons_[q].corners) b.add(m_.nodes[c]);
+        for (Index c : polygons_[q].corners) corners.push_back(m_.nodes[c]);
       const Vec3 &pa = m_.nodes[m_.tets[ee[0]][0]], &pb = m_.nodes[m_.tets[ee[0]][1]];
-      b.grow(1.001 * std::sqrt((pa[0] - pb[0]) * (pa[0] - pb[0]) + (pa[1] - pb[1]) * (pa[1] - pb[1]) +
-                       (pa[2] - pb[2]) * (pa[2] - pb[2])));
-      regions.push_back(b);
+      const double length = std::sqrt((pa[0] - pb[0]) * (pa[0] - pb[0]) + (pa[1] - pb[1]) * (pa[1] - pb[1]) +
+                                      (pa[2] - pb[2]) * (pa[2] - pb[2]));
+      regions.push_back(grown(boxOf(corners.data(), corners.data() + corners.size()), 1.001 * length));
     }
     std::vector<std::uint8_t> inPolygon(m_.size(), 0);
     for (const BoundaryPolygon& p : polygons_)
@@ -170,30 +171,15 @@ class EdgeSplitter {
     for (std::size_t i = 0; i < m_.size(); ++i) {
       if (m_.type[i] != PairElementType::VertexFace || inPolygon[i]) continue;
       const std::array<Index, 3> tri{m_.tets[i][1], m_.tets[i][2], m_.tets[i][3]};
-      const Box b = boxOf(tri);
-      if (std::any_of(regions.begin(), regions.end(), [&](const Box& r) { return r.meets(b); }))
+      const PointBox b = triangleBox(tri);
+      if (std::any_of(regions.begin(), regions.end(), [&](const PointBox& r) { return boxesMeet(r, b); }))
         nearby_.push_back(tri);
     }
   }
 
-  struct Box {
-    Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
-    void add(const Vec3& p) {
-      for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
-    }
-    void grow(double d) {
-      for (int a = 0; a < 3; ++a) lo[a] -= d, hi[a] += d;
-    }
-    bool meets(const Box& o) const {
-      for (int a = 0; a < 3; ++a)
-        if (o.hi[a] < lo[a] || hi[a] < o.lo[a]) return false;
-      return true;
-    }
-  };
-  Box boxOf(const std::array<Index, 3>& t) const {
-    Box b;
-    for (Index n : t) b.add(m_.nodes[n]);
-    return b;
+  PointBox triangleBox(const std::array<Index, 3>& t) const {
+    const std::array<Vec3, 3> corners{m_.nodes[t[0]], m_.nodes[t[1]], m_.nodes[t[2]]};
+    return boxOf(corners.data(), corners.data() + 3);
   }
 
   // Does triangle t of a new triangulation cross a boundary triangle near the
@@ -201,8 +187,10 @@ class EdgeSplitter {
   // or one of `also`?
   bool folds(const std::array<Index, 3>& t, const BoundaryPolygon& p0, const BoundaryPolygon& p1,
              const std::vector<std::array<Index, 3>>& also) const {
-    const Box b = boxOf(t);
-    auto crosses = [&](const std::array<Index, 3>& u) { return b.meets(boxOf(u)) && trianglesCross(m_.nodes, t, u); };
+    const PointBox b = triangleBox(t);
+    auto crosses = [&](const std::array<Index, 3>& u) {
+      return boxesMeet(b, triangleBox(u)) && trianglesCross(m_.nodes, t, u);
+    };
     if (std::any_of(nearby_.begin(), nearby_.end(), crosses) || std::any_of(also.begin(), also.end(), crosses))
       return true;
     for (const BoundaryPolygon& q : polygons_)
@@ -409,7 +397,8 @@ class EdgeSplitter {
         addToScore(s, m_.nodes, {m, t[1], t[2], t[3]});
       }
       std::vector<std::array<Index, 3>> tri0;
-      if (triangulateBoth(p0, k0, p1, k1, m, &tri0, nullptr, s).negative == kNone) continue;  // every way to bend the boundary at c folds it
+      // kNone: every way to bend the boundary at c folds it.
+      if (triangulateBoth(p0, k0, p1, k1, m, &tri0, nullptr, s).negative == kNone) continue;
       if (s.negative < best.negative || (found && s < best)) {
         best = s;
         bestPoint = c;

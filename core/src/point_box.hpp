@@ -25,4 +25,17 @@ inline PointBox boxOf(const Vec3* begin, const Vec3* end) {
   return b;
 }
 
+// b grown by d on every side.
+inline PointBox grown(PointBox b, double d) {
+  for (int k = 0; k < 3; ++k) b.lo[k] -= d, b.hi[k] += d;
+  return b;
+}
+
+// Do the boxes meet (touching counts)?
+inline bool boxesMeet(const PointBox& a, const PointBox& b) {
+  for (int k = 0; k < 3; ++k)
+    if (b.hi[k] < a.lo[k] || a.hi[k] < b.lo[k]) return false;
+  return true;
+}
+
 }  // namespace cadmedial
