@@ -8,6 +8,8 @@
 #include <tuple>
 #include <unordered_map>
 
+#include <tbb/parallel_for.h>
+
 namespace cadmedial {
 
 namespace {
@@ -68,10 +70,7 @@ PairMesh PairMeshBuilder::build(const std::vector<std::uint8_t>& inner) {
       ++m.counts.innerCells;
     }
   weldNearlyCoincidentVoronoiNodes();
-  if (dv_.dimension() == 3) {
-    edgeElements();
-    vertexFaceElements();
-  }
+  if (dv_.dimension() == 3) elements();
   m_ = nullptr;
   inner_ = nullptr;
   return m;
@@ -237,20 +236,20 @@ bool PairMeshBuilder::relabel(PairMesh& mesh, const std::vector<std::uint8_t>& a
   for (const auto& [c, e] : edgeStarts) {
     const Cell_handle cell = dv_.cell(c);
     cellsAroundEdge(cell, kEdgeI[e], kEdgeJ[e], ring);
-    edge(cell->vertex(kEdgeI[e]), cell->vertex(kEdgeJ[e]), ring);
+    edge(cell->vertex(kEdgeI[e]), cell->vertex(kEdgeJ[e]), ring, mesh);
   }
   for (const auto& [cell, i, j] : restoredEdges) {
     cellsAroundEdge(cell, i, j, ring);
-    edge(cell->vertex(i), cell->vertex(j), ring);
+    edge(cell->vertex(i), cell->vertex(j), ring, mesh);
   }
   for (Index c : cells)
     for (int i = 0; i < 4; ++i) {
       const Cell_handle n = dv_.cell(c)->neighbor(i);
       const Index id = DelaunayVoronoi::cellId(n);
-      if (gone[c] && isInner(id) && !added[id]) vertexFace(id, n->index(dv_.cell(c)));  // newly exposed
-      if (added[c] && !isInner(id)) vertexFace(c, i);                                  // the added cell's own
+      if (gone[c] && isInner(id) && !added[id]) vertexFace(id, n->index(dv_.cell(c)), mesh);  // newly exposed
+      if (added[c] && !isInner(id)) vertexFace(c, i, mesh);                                  // the added cell's own
     }
-  for (const auto& [c, w] : restoredFacets) vertexFace(c, w);
+  for (const auto& [c, w] : restoredFacets) vertexFace(c, w, mesh);
   m_ = nullptr;
   inner_ = nullptr;
 
@@ -270,13 +269,13 @@ bool PairMeshBuilder::relabel(PairMesh& mesh, const std::vector<std::uint8_t>& a
   return true;
 }
 
-void PairMeshBuilder::add(PairElementType t, std::array<Index, 4> tet, std::array<Index, 2> medial,
-                          std::array<Index, 3> boundary, bool onSheets) {
-  m_->tets.push_back(tet);
-  m_->type.push_back(t);
-  m_->medialSimplex.push_back(medial);
-  m_->boundarySimplex.push_back(boundary);
-  m_->onSheets.push_back(onSheets ? 1 : 0);
+void PairMeshBuilder::add(PairMesh& out, PairElementType t, std::array<Index, 4> tet, std::array<Index, 2> medial,
+                          std::array<Index, 3> boundary, bool onSheets) const {
+  out.tets.push_back(tet);
+  out.type.push_back(t);
+  out.medialSimplex.push_back(medial);
+  out.boundarySimplex.push_back(boundary);
+  out.onSheets.push_back(onSheets ? 1 : 0);
 }
 
 void PairMeshBuilder::cellsAroundEdge(Cell_handle c, int i, int j, std::vector<Cell_handle>& ring) const {
@@ -289,22 +288,74 @@ void PairMeshBuilder::cellsAroundEdge(Cell_handle c, int i, int j, std::vector<C
   } while (circ != start);
 }
 
-// Face-Vertex (interior edge) or Edge-Edge (boundary edge) elements of every
-// Delaunay edge with an inner cell around it, each edge visited once (a bit
-// per local edge), from the inner cell of lowest id.
-void PairMeshBuilder::edgeElements() {
-  std::vector<std::uint8_t> done(dv_.cellCount(), 0);
+// Every element of the labels, in the order of one pass over the cells by
+// id: first the edges' elements (edgeElements), then the boundary facets'
+// (vertexFaceElements). Blocks of cells run in parallel, each into buffers
+// of its own, appended in block order: the same elements in the same order
+// as one pass.
+void PairMeshBuilder::elements() {
+  const std::size_t cells = dv_.cellCount();
+  constexpr std::size_t kBlock = 8192;
+  const std::size_t blocks = (cells + kBlock - 1) / kBlock;
+  std::vector<PairMesh> edgeParts(blocks), faceParts(blocks);
+  tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
+    const std::size_t begin = b * kBlock, end = std::min(cells, begin + kBlock);
+    edgeElements(begin, end, edgeParts[b]);
+    vertexFaceElements(begin, end, faceParts[b]);
+  });
+  PairMesh& m = *m_;
+  std::size_t total = m.size(), triangles = m.boundaryTriangles.size();
+  for (std::size_t b = 0; b < blocks; ++b) {
+    total += edgeParts[b].size() + faceParts[b].size();
+    triangles += faceParts[b].boundaryTriangles.size();
+  }
+  m.tets.reserve(total);
+  m.type.reserve(total);
+  m.medialSimplex.reserve(total);
+  m.boundarySimplex.reserve(total);
+  m.onSheets.reserve(total);
+  m.boundaryTriangles.reserve(triangles);
+  auto append = [&m](const PairMesh& part) {
+    m.tets.insert(m.tets.end(), part.tets.begin(), part.tets.end());
+    m.type.insert(m.type.end(), part.type.begin(), part.type.end());
+    m.medialSimplex.insert(m.medialSimplex.end(), part.medialSimplex.begin(), part.medialSimplex.end());
+    m.boundarySimplex.insert(m.boundarySimplex.end(), part.boundarySimplex.begin(), part.boundarySimplex.end());
+    m.onSheets.insert(m.onSheets.end(), part.onSheets.begin(), part.onSheets.end());
+    m.boundaryTriangles.insert(m.boundaryTriangles.end(), part.boundaryTriangles.begin(), part.boundaryTriangles.end());
+    m.counts.faceVertex += part.counts.faceVertex;
+    m.counts.edgeEdge += part.counts.edgeEdge;
+    m.counts.vertexFace += part.counts.vertexFace;
+  };
+  for (const PairMesh& part : edgeParts) append(part);
+  for (const PairMesh& part : faceParts) append(part);
+  m.counts.boundaryTriangles = m.boundaryTriangles.size();
+}
+
+// Face-Vertex (interior edge) or Edge-Edge (boundary edge) elements of the
+// Delaunay edges owned by cells [begin, end): an edge's owner is the inner
+// cell of lowest id around it; in the order of the owners' ids and local
+// edges. A circulated edge is marked on the range's cells around it (a bit
+// per local edge), so they skip it; an edge whose owner is below `begin`
+// is circulated by the range's first cell that has it, which sees the lower
+// inner id and leaves it.
+void PairMeshBuilder::edgeElements(std::size_t begin, std::size_t end, PairMesh& out) const {
+  std::vector<std::uint8_t> done(end - begin, 0);
   std::vector<Cell_handle> ring;
-  for (Index id = 0; id < dv_.cellCount(); ++id) {
-    if (!isInner(id)) continue;
-    const Cell_handle c = dv_.cell(id);
+  for (std::size_t id = begin; id < end; ++id) {
+    if (!isInner(static_cast<Index>(id))) continue;
+    const Cell_handle c = dv_.cell(static_cast<Index>(id));
     for (int e = 0; e < 6; ++e) {
-      if (done[id] & (1u << e)) continue;
+      if (done[id - begin] & (1u << e)) continue;
       const Vertex_handle va = c->vertex(kEdgeI[e]), vb = c->vertex(kEdgeJ[e]);
       cellsAroundEdge(c, kEdgeI[e], kEdgeJ[e], ring);
-      for (const Cell_handle& r : ring)
-        done[DelaunayVoronoi::cellId(r)] |= static_cast<std::uint8_t>(1u << kEdgeOf[r->index(va)][r->index(vb)]);
-      edge(va, vb, ring);
+      bool owner = true;
+      for (const Cell_handle& r : ring) {
+        const std::size_t rid = DelaunayVoronoi::cellId(r);
+        if (rid >= begin && rid < end)
+          done[rid - begin] |= static_cast<std::uint8_t>(1u << kEdgeOf[r->index(va)][r->index(vb)]);
+        if (rid < id && isInner(static_cast<Index>(rid))) owner = false;
+      }
+      if (owner) edge(va, vb, ring, out);
     }
   }
 }
@@ -327,7 +378,7 @@ void PairMeshBuilder::orientRing(Vertex_handle va, Vertex_handle vb, std::vector
     std::reverse(ring.begin(), ring.end());
 }
 
-void PairMeshBuilder::edge(Vertex_handle va, Vertex_handle vb, std::vector<Cell_handle>& ring) {
+void PairMeshBuilder::edge(Vertex_handle va, Vertex_handle vb, std::vector<Cell_handle>& ring, PairMesh& out) const {
   std::size_t innerCount = 0;
   for (const Cell_handle& r : ring) innerCount += isInner(DelaunayVoronoi::cellId(r)) ? 1 : 0;
   if (innerCount == 0) return;
@@ -348,9 +399,9 @@ void PairMeshBuilder::edge(Vertex_handle va, Vertex_handle vb, std::vector<Cell_
     const Index n0 = node(ring[0]);
     for (std::size_t i = 1; i + 1 < k; ++i) {
       const Index ni = node(ring[i]), nj = node(ring[i + 1]);
-      add(PairElementType::FaceVertex, {a, n0, ni, nj}, facet, {a, kNoIndex, kNoIndex}, linked);
-      add(PairElementType::FaceVertex, {b, n0, nj, ni}, facet, {b, kNoIndex, kNoIndex}, linked);
-      m_->counts.faceVertex += 2;
+      add(out, PairElementType::FaceVertex, {a, n0, ni, nj}, facet, {a, kNoIndex, kNoIndex}, linked);
+      add(out, PairElementType::FaceVertex, {b, n0, nj, ni}, facet, {b, kNoIndex, kNoIndex}, linked);
+      out.counts.faceVertex += 2;
     }
     return;
   }
@@ -358,33 +409,34 @@ void PairMeshBuilder::edge(Vertex_handle va, Vertex_handle vb, std::vector<Cell_
     const Index ci = DelaunayVoronoi::cellId(ring[i]), cj = DelaunayVoronoi::cellId(ring[(i + 1) % k]);
     if (!isInner(ci) || !isInner(cj)) continue;
     const bool linked = sheetVoronoiEdges_.find(ci, cj) != kNoIndex;
-    add(PairElementType::EdgeEdge, {a, b, nodeOfCell_[ci], nodeOfCell_[cj]}, {ci, cj}, {a, b, kNoIndex}, linked);
-    ++m_->counts.edgeEdge;
+    add(out, PairElementType::EdgeEdge, {a, b, nodeOfCell_[ci], nodeOfCell_[cj]}, {ci, cj}, {a, b, kNoIndex}, linked);
+    ++out.counts.edgeEdge;
   }
 }
 
 // The Vertex-Face element of inner cell `id` on its facet opposite local
 // vertex i (a boundary facet: the neighbour there is outer).
-void PairMeshBuilder::vertexFace(Index id, int i) {
+void PairMeshBuilder::vertexFace(Index id, int i, PairMesh& out) const {
   const Cell_handle c = dv_.cell(id);
   Vertex_handle x = c->vertex((i + 1) & 3), y = c->vertex((i + 2) & 3), z = c->vertex((i + 3) & 3);
   // Outward: the cell's own vertex i on the negative side.
   if (CGAL::orientation(x->point(), y->point(), z->point(), c->vertex(i)->point()) == CGAL::POSITIVE) std::swap(y, z);
   const std::array<Index, 3> tri{x->info(), y->info(), z->info()};
-  m_->boundaryTriangles.push_back(tri);
-  add(PairElementType::VertexFace, {nodeOfCell_[id], tri[0], tri[1], tri[2]}, {id, kNoIndex}, tri,
+  out.boundaryTriangles.push_back(tri);
+  add(out, PairElementType::VertexFace, {nodeOfCell_[id], tri[0], tri[1], tri[2]}, {id, kNoIndex}, tri,
       sheetCells_[id] != 0);
-  ++m_->counts.vertexFace;
+  ++out.counts.vertexFace;
 }
 
-// Vertex-Face: every facet of an inner cell whose neighbour is outer.
-void PairMeshBuilder::vertexFaceElements() {
-  for (Index id = 0; id < dv_.cellCount(); ++id) {
-    if (!isInner(id)) continue;
+// Vertex-Face: every facet of an inner cell in [begin, end) whose neighbour
+// is outer.
+void PairMeshBuilder::vertexFaceElements(std::size_t begin, std::size_t end, PairMesh& out) const {
+  for (std::size_t id = begin; id < end; ++id) {
+    if (!isInner(static_cast<Index>(id))) continue;
     for (int i = 0; i < 4; ++i)
-      if (!isInner(DelaunayVoronoi::cellId(dv_.cell(id)->neighbor(i)))) vertexFace(id, i);
+      if (!isInner(DelaunayVoronoi::cellId(dv_.cell(static_cast<Index>(id))->neighbor(i))))
+        vertexFace(static_cast<Index>(id), i, out);
   }
-  m_->counts.boundaryTriangles = m_->boundaryTriangles.size();
 }
 
 // Where an added cell's circumcenter is within the weld tolerance of a
@@ -423,33 +475,67 @@ void PairMeshBuilder::weldNearlyCoincidentVoronoiNodes() {
   if (m.nodes.size() <= m.sampleNodes) return;
   const double tolerance = weldTolerance_;
   if (!(tolerance > 0)) return;
-  auto cellOf = [&](const Vec3& p, int k) { return static_cast<std::int64_t>(std::floor(p[k] / tolerance)); };
-  auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) {
-    return (static_cast<std::uint64_t>(x) * 73856093u) ^ (static_cast<std::uint64_t>(y) * 19349663u) ^
-           (static_cast<std::uint64_t>(z) * 83492791u);
+  // Grid cells of the tolerance's size: two nodes in one cell are within
+  // the tolerance, so a cell holds at most one node that is not welded; a
+  // node's candidates are those of the 27 cells around it, first found
+  // first. Open addressing, and a bit per hash value of 8 times as many
+  // that says whether any cell with it holds a node: most of the 27 cells
+  // are empty, and the bits stay in cache where the table does not
+  // (std::unordered_multimap's lookups were 1/3 of the build).
+  using Cell = std::array<std::int64_t, 3>;
+  auto cellOf = [&](const Vec3& p) {
+    return Cell{static_cast<std::int64_t>(std::floor(p[0] / tolerance)),
+                static_cast<std::int64_t>(std::floor(p[1] / tolerance)),
+                static_cast<std::int64_t>(std::floor(p[2] / tolerance))};
   };
-  std::unordered_multimap<std::uint64_t, Index> grid;
-  grid.reserve(m.nodes.size() - m.sampleNodes);
+  auto hash = [](const Cell& c) {
+    std::uint64_t x = static_cast<std::uint64_t>(c[0]) * 0x9e3779b97f4a7c15ULL;
+    x ^= static_cast<std::uint64_t>(c[1]) + 0x7f4a7c159e3779b9ULL + (x << 6) + (x >> 2);
+    x ^= static_cast<std::uint64_t>(c[2]) + 0x94d049bb133111ebULL + (x << 6) + (x >> 2);
+    x ^= x >> 31;
+    x *= 0xbf58476d1ce4e5b9ULL;
+    return x ^ (x >> 29);
+  };
+  std::size_t capacity = 16;
+  while (capacity < 2 * (m.nodes.size() - m.sampleNodes)) capacity <<= 1;
+  const std::size_t mask = capacity - 1;
+  std::vector<Cell> cells(capacity);
+  std::vector<Index> nodeIn(capacity, kNoIndex);
+  const std::size_t bitMask = 8 * capacity - 1;
+  std::vector<std::uint64_t> bits(capacity / 8 + 1, 0);
+  auto bit = [&](std::uint64_t h) { return (h >> 17) & bitMask; };
+  auto find = [&](const Cell& c) {
+    for (std::size_t slot = hash(c) & mask;; slot = (slot + 1) & mask)
+      if (nodeIn[slot] == kNoIndex || cells[slot] == c) return slot;
+  };
   for (Index n = static_cast<Index>(m.sampleNodes); n < m.nodes.size(); ++n) {
     Vec3& p = m.nodes[n];
-    const std::int64_t cx = cellOf(p, 0), cy = cellOf(p, 1), cz = cellOf(p, 2);
+    const Cell c = cellOf(p);
     bool welded = false;
     for (int dx = -1; dx <= 1 && !welded; ++dx)
       for (int dy = -1; dy <= 1 && !welded; ++dy)
         for (int dz = -1; dz <= 1 && !welded; ++dz) {
-          const auto range = grid.equal_range(key(cx + dx, cy + dy, cz + dz));
-          for (auto it = range.first; it != range.second; ++it) {
-            const Vec3& q = m.nodes[it->second];
-            if (std::abs(q[0] - p[0]) <= tolerance && std::abs(q[1] - p[1]) <= tolerance &&
-                std::abs(q[2] - p[2]) <= tolerance) {
-              if (q != p) ++m.counts.weldedNodes;
-              p = q;
-              welded = true;
-              break;
-            }
+          const Cell around{c[0] + dx, c[1] + dy, c[2] + dz};
+          const std::size_t b = bit(hash(around));
+          if (!(bits[b >> 6] >> (b & 63) & 1)) continue;
+          const Index other = nodeIn[find(around)];
+          if (other == kNoIndex) continue;
+          const Vec3& q = m.nodes[other];
+          if (std::abs(q[0] - p[0]) <= tolerance && std::abs(q[1] - p[1]) <= tolerance &&
+              std::abs(q[2] - p[2]) <= tolerance) {
+            if (q != p) ++m.counts.weldedNodes;
+            p = q;
+            welded = true;
           }
         }
-    if (!welded) grid.emplace(key(cx, cy, cz), n);
+    if (welded) continue;
+    const std::size_t slot = find(c);
+    if (nodeIn[slot] == kNoIndex) {  // (else a node within the tolerance holds it, and p welded to it)
+      cells[slot] = c;
+      nodeIn[slot] = n;
+      const std::size_t b = bit(hash(c));
+      bits[b >> 6] |= std::uint64_t(1) << (b & 63);
+    }
   }
 }
 

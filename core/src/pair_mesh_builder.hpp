@@ -50,14 +50,18 @@ class PairMeshBuilder {
   bool isInnerIn(const std::vector<std::uint8_t>& labels, Index c) const { return !dv_.isInfinite(c) && labels[c] != 0; }
   bool isInner(Index c) const { return isInnerIn(*inner_, c); }
   Index node(Cell_handle c) const { return nodeOfCell_[DelaunayVoronoi::cellId(c)]; }
-  void add(PairElementType t, std::array<Index, 4> tet, std::array<Index, 2> medial, std::array<Index, 3> boundary,
-           bool onSheets);
-  void edgeElements();
+  // Element appenders: const, so that blocks of cells can run in parallel,
+  // each into a PairMesh of its own.
+  void add(PairMesh& out, PairElementType t, std::array<Index, 4> tet, std::array<Index, 2> medial,
+           std::array<Index, 3> boundary, bool onSheets) const;
+  void elements();
+  void edgeElements(std::size_t begin, std::size_t end, PairMesh& out) const;
   void cellsAroundEdge(Cell_handle c, int i, int j, std::vector<Cell_handle>& ring) const;
   void orientRing(Vertex_handle va, Vertex_handle vb, std::vector<Cell_handle>& ring) const;
-  void edge(Vertex_handle va, Vertex_handle vb, std::vector<Cell_handle>& ring);
-  void vertexFace(Index cell, int facet);
-  void vertexFaceElements();
+  // The elements of edge ab (ring: the cells around it, from its owner).
+  void edge(Vertex_handle va, Vertex_handle vb, std::vector<Cell_handle>& ring, PairMesh& out) const;
+  void vertexFace(Index cell, int facet, PairMesh& out) const;
+  void vertexFaceElements(std::size_t begin, std::size_t end, PairMesh& out) const;
   void weldNearlyCoincidentVoronoiNodes();
   Vec3 weldedPosition(const PairMesh& mesh, Index cell) const;
 
