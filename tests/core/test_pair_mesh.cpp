@@ -11,6 +11,8 @@
 #include <map>
 #include <set>
 
+#include <tbb/global_control.h>
+
 #include "analytic_shapes.hpp"
 #include "cadmedial/compute_medial.hpp"
 #include "cadmedial/medial.hpp"
@@ -153,7 +155,9 @@ TEST(PairMesh, TorusKeepsItsVolumeAndOnlyPartIsOnTheFilteredAxis) {
   // (Vertex-Face elements hang on Voronoi vertices next to the surface,
   // which a smooth shape's axis does not reach: none may be linked.)
   for (int t = 0; t < 3; ++t) {
-    if (t != static_cast<int>(PairElementType::VertexFace)) EXPECT_GT(linked[t], 0u) << "type " << t;
+    if (t != static_cast<int>(PairElementType::VertexFace)) {
+      EXPECT_GT(linked[t], 0u) << "type " << t;
+    }
     EXPECT_LT(linked[t], all[t]) << "type " << t;
   }
 }
@@ -187,6 +191,72 @@ TEST(PairMesh, GridBoxWithCosphericalSamplesStaysValid) {
   buildAndCheck("grid box", s, [](const Vec3& p) {
     return p[0] > 0 && p[0] < 1 && p[1] > 0 && p[1] < 1 && p[2] > 0 && p[2] < 1;
   }, 1.0, 1e-9);
+}
+
+TEST(PairMesh, BuildGivesEveryEdgeItsElementsOnceOnAnyNumberOfThreads) {
+  // The build runs in parallel blocks of 8,192 cells, each edge from the
+  // block of its owner (the inner cell of lowest id around it). 12 k torus
+  // samples: ~10 blocks, edges across every block boundary. Expected per
+  // Delaunay edge, from its own ring of cells: 2 (k - 2) Face-Vertex
+  // elements when all k cells are inner, else one Edge-Edge element per
+  // pair of consecutive inner cells.
+  const auto torus = makeTorus(1.0, 0.35);
+  const SampleSet s = pointsOnly(sampleSurface(*torus, 12000, 5, 0.0));
+  DelaunayVoronoi dv(s.points);
+  ASSERT_GT(dv.cellCount(), 3u * 8192u);
+  const std::vector<std::uint8_t> inner = exactLabels(dv, [&](const Vec3& p) { return torus->inside(p); });
+  const PairMesh m = buildPairMesh(dv, s, inner, nullptr, /*repair=*/false);
+
+  auto isInner = [&](DelaunayVoronoi::Cell_handle c) {
+    const Index id = DelaunayVoronoi::cellId(c);
+    return !dv.isInfinite(id) && inner[id] != 0;
+  };
+  std::map<std::pair<Index, Index>, std::array<std::size_t, 2>> expected, found;  // (face-vertex, edge-edge)
+  const auto& dt = dv.triangulation();
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+    std::vector<DelaunayVoronoi::Cell_handle> ring;
+    auto circulator = dt.incident_cells(*e), start = circulator;
+    do {
+      ring.push_back(circulator);
+    } while (++circulator != start);
+    std::size_t innerCells = 0, innerPairs = 0;
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      innerCells += isInner(ring[k]) ? 1 : 0;
+      innerPairs += isInner(ring[k]) && isInner(ring[(k + 1) % ring.size()]) ? 1 : 0;
+    }
+    if (innerCells == 0) continue;
+    const Index a = e->first->vertex(e->second)->info(), b = e->first->vertex(e->third)->info();
+    expected[{std::min(a, b), std::max(a, b)}] =
+        innerCells == ring.size() ? std::array<std::size_t, 2>{2 * (ring.size() - 2), 0}
+                                  : std::array<std::size_t, 2>{0, innerPairs};
+  }
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    if (m.type[i] == PairElementType::FaceVertex) ++found[{m.medialSimplex[i][0], m.medialSimplex[i][1]}][0];
+    if (m.type[i] == PairElementType::EdgeEdge) {
+      const Index a = m.boundarySimplex[i][0], b = m.boundarySimplex[i][1];
+      ++found[{std::min(a, b), std::max(a, b)}][1];
+    }
+  }
+  // (Edges whose inner cells give no element, a ring of two inner cells
+  // without an inner pair between them cannot occur: k >= 3.)
+  for (auto it = expected.begin(); it != expected.end();)
+    it = (*it).second == std::array<std::size_t, 2>{0, 0} ? expected.erase(it) : std::next(it);
+  EXPECT_EQ(found.size(), expected.size());
+  std::size_t wrong = 0;
+  for (const auto& [edge, counts] : expected) {
+    const auto it = found.find(edge);
+    wrong += it == found.end() || it->second != counts ? 1 : 0;
+  }
+  EXPECT_EQ(wrong, 0u) << "edges whose elements are missing or repeated";
+
+  // One thread: the same elements in the same order.
+  tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+  const PairMesh serial = buildPairMesh(dv, s, inner, nullptr, /*repair=*/false);
+  EXPECT_TRUE(serial.tets == m.tets);
+  EXPECT_TRUE(serial.type == m.type);
+  EXPECT_TRUE(serial.medialSimplex == m.medialSimplex);
+  EXPECT_TRUE(serial.boundaryTriangles == m.boundaryTriangles);
+  EXPECT_TRUE(serial.nodes == m.nodes);
 }
 
 TEST(PairMesh, ValidityCatchesAVoronoiNodeMovedOutside) {
