@@ -58,7 +58,8 @@ class PairMeshBuilder {
   void edgeElements(std::size_t begin, std::size_t end, PairMesh& out) const;
   void cellsAroundEdge(Cell_handle c, int i, int j, std::vector<Cell_handle>& ring) const;
   void orientRing(Vertex_handle va, Vertex_handle vb, std::vector<Cell_handle>& ring) const;
-  // The elements of edge ab (ring: the cells around it, from its owner).
+  // The elements of edge ab (ring: the cells around it; the build starts it
+  // at the edge's owner, so Edge-Edge elements come in the same order).
   void edge(Vertex_handle va, Vertex_handle vb, std::vector<Cell_handle>& ring, PairMesh& out) const;
   void vertexFace(Index cell, int facet, PairMesh& out) const;
   void vertexFaceElements(std::size_t begin, std::size_t end, PairMesh& out) const;
