@@ -173,7 +173,7 @@ class EdgeSplitter {
       const std::array<Index, 3> tri{m_.tets[i][1], m_.tets[i][2], m_.tets[i][3]};
       const PointBox b = triangleBox(tri);
       if (std::any_of(regions.begin(), regions.end(), [&](const PointBox& r) { return boxesMeet(r, b); }))
-        nearby_.push_back(tri);
+        nearby_.push_back({tri, b});
     }
   }
 
@@ -191,7 +191,10 @@ class EdgeSplitter {
     auto crosses = [&](const std::array<Index, 3>& u) {
       return boxesMeet(b, triangleBox(u)) && trianglesCross(m_.nodes, t, u);
     };
-    if (std::any_of(nearby_.begin(), nearby_.end(), crosses) || std::any_of(also.begin(), also.end(), crosses))
+    auto crossesNearby = [&](const NearbyTriangle& u) {
+      return boxesMeet(b, u.box) && trianglesCross(m_.nodes, t, u.corners);
+    };
+    if (std::any_of(nearby_.begin(), nearby_.end(), crossesNearby) || std::any_of(also.begin(), also.end(), crosses))
       return true;
     for (const BoundaryPolygon& q : polygons_)
       if (&q != &p0 && &q != &p1 && std::any_of(q.triangles.begin(), q.triangles.end(), crosses)) return true;
@@ -349,21 +352,21 @@ class EdgeSplitter {
   }
 
   // Both polygons of edge ab re-triangulated with split node m on it (p0's
-  // first, p1's not folding through it nor repeating its ear a m b); their
-  // scores are added to `score`. Returns p0's and p1's score summed, with
-  // negative = kNone when either has no triangulation that fits.
+  // first, p1's not folding through it nor repeating its ear a m b).
+  // Returns their scores summed, negative = kNone when either has no
+  // triangulation that fits; the triangulations go to tri0, tri1 if given.
   Score triangulateBoth(const BoundaryPolygon& p0, int k0, const BoundaryPolygon& p1, int k1, Index m,
-                        std::vector<std::array<Index, 3>>* tri0, std::vector<std::array<Index, 3>>* tri1,
-                        Score& score) const {
+                        std::vector<std::array<Index, 3>>* tri0 = nullptr,
+                        std::vector<std::array<Index, 3>>* tri1 = nullptr) const {
     const Index a = p0.corners[k0], b = p0.corners[(k0 + 1) % 3];
-    const Score s0 = bestTriangulation(p0, outline(p0, k0, m), tri0, earsOfPartners(p0), p0, p1, {});
+    std::vector<std::array<Index, 3>> first;
+    const Score s0 = bestTriangulation(p0, outline(p0, k0, m), &first, earsOfPartners(p0), p0, p1, {});
     if (s0.negative == kNone) return s0;
     std::vector<TriangleKey> forbidden1 = earsOfPartners(p1);
-    if (hasTriangle(*tri0, sortedKey(a, m, b))) forbidden1.push_back(sortedKey(a, m, b));
-    const Score s1 = bestTriangulation(p1, outline(p1, k1, m), tri1, forbidden1, p0, p1, *tri0);
+    if (hasTriangle(first, sortedKey(a, m, b))) forbidden1.push_back(sortedKey(a, m, b));
+    const Score s1 = bestTriangulation(p1, outline(p1, k1, m), tri1, forbidden1, p0, p1, first);
     if (s1.negative == kNone) return s1;
-    score.negative += s0.negative + s1.negative;
-    score.deficit += s0.deficit + s1.deficit;
+    if (tri0) *tri0 = std::move(first);
     return {s0.negative + s1.negative, s0.deficit + s1.deficit};
   }
 
@@ -396,9 +399,11 @@ class EdgeSplitter {
         addToScore(s, m_.nodes, {t[0], m, t[2], t[3]});
         addToScore(s, m_.nodes, {m, t[1], t[2], t[3]});
       }
-      std::vector<std::array<Index, 3>> tri0;
       // kNone: every way to bend the boundary at c folds it.
-      if (triangulateBoth(p0, k0, p1, k1, m, &tri0, nullptr, s).negative == kNone) continue;
+      const Score polygons = triangulateBoth(p0, k0, p1, k1, m);
+      if (polygons.negative == kNone) continue;
+      s.negative += polygons.negative;
+      s.deficit += polygons.deficit;
       if (s.negative < best.negative || (found && s < best)) {
         best = s;
         bestPoint = c;
@@ -414,8 +419,7 @@ class EdgeSplitter {
     // triangulations of both polygons (the ones its score was made of).
     m_.nodes[m] = bestPoint;
     std::vector<std::array<Index, 3>> tri0, tri1;
-    Score unused;
-    if (triangulateBoth(p0, k0, p1, k1, m, &tri0, &tri1, unused).negative == kNone) {
+    if (triangulateBoth(p0, k0, p1, k1, m, &tri0, &tri1).negative == kNone) {
       m_.nodes.pop_back();
       return false;
     }
@@ -469,7 +473,13 @@ class EdgeSplitter {
   std::vector<std::uint8_t> edgeEnd_;  // per node: an end of one of edges_
   std::vector<BoundaryPolygon> polygons_;
   std::unordered_map<std::uint64_t, std::vector<std::size_t>> polygonsOfEdge_;
-  std::vector<std::array<Index, 3>> nearby_;  // boundary triangles near edges_, not in polygons_
+  // Boundary triangles near edges_, not in polygons_, with their boxes
+  // (each fold test reads them all).
+  struct NearbyTriangle {
+    std::array<Index, 3> corners;
+    PointBox box;
+  };
+  std::vector<NearbyTriangle> nearby_;
   std::vector<std::size_t> removed_;
 };
 

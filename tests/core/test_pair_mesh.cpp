@@ -237,10 +237,10 @@ TEST(PairMesh, BuildGivesEveryEdgeItsElementsOnceOnAnyNumberOfThreads) {
       ++found[{std::min(a, b), std::max(a, b)}][1];
     }
   }
-  // (Edges whose inner cells give no element, a ring of two inner cells
-  // without an inner pair between them cannot occur: k >= 3.)
+  // An edge whose inner cells are never next to each other around it has
+  // no element at all.
   for (auto it = expected.begin(); it != expected.end();)
-    it = (*it).second == std::array<std::size_t, 2>{0, 0} ? expected.erase(it) : std::next(it);
+    it = it->second == std::array<std::size_t, 2>{0, 0} ? expected.erase(it) : std::next(it);
   EXPECT_EQ(found.size(), expected.size());
   std::size_t wrong = 0;
   for (const auto& [edge, counts] : expected) {
