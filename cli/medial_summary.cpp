@@ -57,6 +57,7 @@ nlohmann::json medialSummaryJson(const SamplingReport& sampling, const MedialRes
                       {"sub_resolution_island_polygons", c.subResolutionIslandPolygons},
                       {"point_islands_dropped", c.pointIslands},
                       {"forced_only_islands_dropped", c.forcedOnlyIslands},
+                      {"coincident_vertices_welded", c.coincidentVerticesWelded},
                       {"walk_oracle_checked", c.oracleChecked},
                       {"walk_oracle_disagreements", c.oracleDisagreements}};
   j["seconds"] = {{"classify", sampling.secondsClassify},

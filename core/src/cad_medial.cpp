@@ -108,6 +108,9 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
     r.counts.subResolutionIslands =
         dropSubResolutionIslands(r, params.islandRadiusFraction * spacing, &r.counts.subResolutionIslandPolygons);
   }
+  // After the rules above, which read one vertex per cell. Voronoi vertices
+  // this close are one (cospherical samples).
+  r.counts.coincidentVerticesWelded = weldCoincidentVertices(r, 1e-9 * samples.bboxDiagonal());
   r.times.complex = watch.seconds();
 
   watch.restart();

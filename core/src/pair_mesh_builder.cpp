@@ -37,6 +37,19 @@ PairMeshBuilder::PairMeshBuilder(const DelaunayVoronoi& dv, const SampleSet& sam
   if (!axis) return;
   sheetFacetEdges_.reserve(axis->polygonCount());
   sheetVoronoiEdges_.reserve(axis->polygonVertices.size());
+  // A vertex the axis welded stands for several cells (coincident
+  // circumcenters): each of them is on the sheets, and so is a Voronoi edge
+  // between any of the cells of two consecutive corners, or of one corner.
+  std::unordered_map<Index, std::vector<Index>> alsoCells;
+  for (const auto& [welded, kept] : axis->weldedCells) alsoCells[kept].push_back(welded);
+  auto forEachCell = [&](Index c, auto&& f) {
+    if (c == kNoIndex) return;
+    f(c);
+    if (alsoCells.empty()) return;
+    const auto it = alsoCells.find(c);
+    if (it != alsoCells.end())
+      for (Index other : it->second) f(other);
+  };
   for (std::size_t p = 0; p < axis->polygonCount(); ++p) {
     if (axis->provenance[p] == PolygonProvenance::DelaunayEdgeFacet)
       sheetFacetEdges_.insert(axis->provenanceSamples[p][0], axis->provenanceSamples[p][1], 1);
@@ -44,8 +57,11 @@ PairMeshBuilder::PairMeshBuilder(const DelaunayVoronoi& dv, const SampleSet& sam
     for (Index k = b; k < e; ++k) {
       const Index c = axis->vertexCell[axis->polygonVertices[k]];
       const Index d = axis->vertexCell[axis->polygonVertices[k + 1 < e ? k + 1 : b]];
-      if (c != kNoIndex && c < dv.cellCount()) sheetCells_[c] = 1;
-      if (c != kNoIndex && d != kNoIndex) sheetVoronoiEdges_.insert(c, d, 1);
+      forEachCell(c, [&](Index x) {
+        if (x < dv.cellCount()) sheetCells_[x] = 1;
+        forEachCell(d, [&](Index y) { sheetVoronoiEdges_.insert(x, y, 1); });
+        if (x != c) sheetVoronoiEdges_.insert(c, x, 1);  // the zero-length edges the weld dropped
+      });
     }
   }
 }

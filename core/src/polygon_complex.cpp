@@ -83,6 +83,7 @@ void keepPolygons(MedialComplex& mc, const std::vector<std::uint8_t>& keep) {
     out.provenanceSamples.push_back(mc.provenanceSamples[p]);
   }
   out.sheet.assign(out.polygonCount(), kNoIndex);
+  out.weldedCells = std::move(mc.weldedCells);
   mc = std::move(out);
 }
 

@@ -124,7 +124,8 @@ SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& param
     if (k == SampleKind::Edge) ++report.edgeSamples;
     if (k == SampleKind::Corner) ++report.vertexSamples;
   }
-  report.legSamples = withLegs - featureSamples;
+  report.rungSamples = ctx.rungSamples;
+  report.legSamples = withLegs - featureSamples - ctx.rungSamples;
   report.faceSamples = set.points.size() - withLegs;
   report.triplets = set.triplets.size();
   report.tripletsDropped = ctx.tripletsDropped;

@@ -36,6 +36,7 @@ struct SamplingContext {
   std::vector<std::vector<double>> edgeParams;  // per edge: curve parameter of each sample in SampleSet::edges[e].samples
   std::vector<gp_Pnt2d> faceSampleUv;  // per sample: UV on its owner face (face samples only)
   int tripletsDropped = 0;           // convex-edge samples where no equal-leg pair fits on the faces
+  std::size_t rungSamples = 0;       // knife-edge rungs (placeTriplets), counted with the legs
 
   void recordFaceUv(Index sample, const gp_Pnt2d& uv) {
     if (faceSampleUv.size() <= sample) faceSampleUv.resize(sample + 1);

@@ -196,3 +196,46 @@ TEST(Topology, ForcedOnlyIslandsAreDroppedButNeverTheLargestComponent) {
   EXPECT_EQ(dropForcedOnlyIslands(allForced, nullptr), 1u);
   EXPECT_EQ(allForced.polygonCount(), 2u);
 }
+
+TEST(Topology, CoincidentVoronoiVerticesAreWeldedIntoOne) {
+  // A strip of two triangles that meet at 0 and at a point held twice, as
+  // cells 2 and 3 whose circumcenters are 1e-14 apart (cospherical
+  // samples): unwelded the strip pinches at 0 (a loop, β1 = 1); welded it
+  // is a disk. A quad whose two corners are those cells loses one corner.
+  MedialComplex mc = complexOf(6, {{0, 1, 2}, {0, 3, 4}, {2, 1, 5, 3}});
+  mc.vertices[2] = {5, 5, 0};
+  mc.vertices[3] = {5, 5 + 1e-14, 0};
+  mc.vertices[4] = {9, 9, 0};
+  mc.vertices[5] = {2, 8, 0};
+  EXPECT_EQ(topologyOf(mc).beta1, 1);
+  EXPECT_EQ(weldCoincidentVertices(mc, 1e-9), 1u);
+  ASSERT_EQ(mc.polygonCount(), 3u);
+  EXPECT_EQ(mc.vertices.size(), 5u);
+  EXPECT_EQ(mc.polygonSize(2), 3);
+  ASSERT_EQ(mc.weldedCells.size(), 1u);
+  EXPECT_EQ(mc.weldedCells[0][0], 3u);
+  EXPECT_EQ(mc.weldedCells[0][1], 2u);
+  const ComplexTopology t = topologyOf(mc);
+  EXPECT_EQ(t.beta0, 1);
+  EXPECT_EQ(t.beta1, 0);
+  // Vertices farther apart than the tolerance stay apart.
+  MedialComplex apart = complexOf(4, {{0, 1, 2}, {1, 2, 3}});
+  apart.vertices[3] = {1 + 1e-6, 0, 0};
+  EXPECT_EQ(weldCoincidentVertices(apart, 1e-9), 0u);
+  // No weld leaves a polygon with fewer than three corners when nothing
+  // else holds what it spans: the triangle 2-3-4 is what joins the quad
+  // to the coincident pair's other polygons (as on a torus's core circle).
+  MedialComplex joint = complexOf(6, {{0, 1, 2}, {2, 3, 4}, {3, 5, 1}});
+  joint.vertices[3] = {2, 1e-14, 0};
+  EXPECT_EQ(weldCoincidentVertices(joint, 1e-9), 0u);
+  EXPECT_EQ(joint.polygonCount(), 3u);
+  // Nor one that only pinches: two triangles joined through a third,
+  // with a corner of each at one point (a corner sphere's centre reached
+  // by two fillet centre curves): welding would add a loop.
+  MedialComplex pinch = complexOf(7, {{0, 1, 2}, {2, 3, 6}, {3, 4, 5}});
+  pinch.vertices[0] = {0, 5, 0};
+  pinch.vertices[5] = {0, 5 + 1e-14, 0};
+  EXPECT_EQ(topologyOf(pinch).beta1, 0);
+  EXPECT_EQ(weldCoincidentVertices(pinch, 1e-9), 0u);
+  EXPECT_EQ(topologyOf(pinch).beta1, 0);
+}

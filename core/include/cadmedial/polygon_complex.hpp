@@ -28,6 +28,9 @@ struct MedialComplex {
   // Sheet id per polygon (0 .. sheetCount-1), filled by segmentSheets().
   std::vector<Index> sheet;
   std::size_t sheetCount = 0;
+  // Cells whose Voronoi vertex weldCoincidentVertices joined to another
+  // cell's: (cell welded, cell of the vertex kept).
+  std::vector<std::array<Index, 2>> weldedCells;
 
   std::size_t polygonCount() const { return provenance.size(); }
   Index polygonSize(std::size_t i) const { return polygonOffsets[i + 1] - polygonOffsets[i]; }
@@ -83,6 +86,15 @@ std::size_t dropPointIslands(MedialComplex& complex, double tolerance, std::size
 // polygon uses any more. Returns the number of components removed;
 // *polygonsRemoved their polygons.
 std::size_t dropForcedOnlyIslands(MedialComplex& complex, std::size_t* polygonsRemoved);
+
+// Joins Voronoi vertices closer than `tolerance` (cospherical samples: one
+// vertex, several cells, circumcenters apart by rounding) into the first of
+// them; drops zero-length polygon edges and polygons left with fewer than
+// three corners (only where other polygons hold what they span), keeps a
+// group of welds only when it adds no cycle (β1 from χ and β0), and records
+// the cells joined in weldedCells. Returns the number of vertices welded
+// (coincident_vertices.cpp). Call before buildComplexEdges.
+std::size_t weldCoincidentVertices(MedialComplex& complex, double tolerance);
 
 // Keeps the polygons with keep[i] != 0 (in order) and the vertices they use
 // (renumbered); sheets are reset.

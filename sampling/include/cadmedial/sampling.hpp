@@ -46,6 +46,7 @@ struct FeatureCounts {
 struct SamplingReport {
   FeatureCounts features;  // of the split solid that was sampled
   std::size_t faceSamples = 0, edgeSamples = 0, vertexSamples = 0, legSamples = 0;
+  std::size_t rungSamples = 0;  // knife-edge rungs: mirror pairs continuing the legs where faces meet at a small angle
   std::size_t triplets = 0, tripletsDropped = 0;
   int facesFailed = 0, orphanSamples = 0, droppedTriangles = 0;
   int flippedEdges = 0;         // UV-Delaunay edges flipped: a triangle stood > 45° off the exact surface

@@ -1,0 +1,251 @@
+// Why: cospherical samples have one Voronoi vertex, but the Delaunay
+// triangulation splits them into several cells whose circumcenters agree
+// only up to rounding (1e-13 apart), and the complex gives each cell its
+// own vertex. Four cocircular samples (two mirror pairs: the legs of
+// consecutive triplets, knife-edge rungs) make two such points P and Q; the
+// sheet facets of the two pairs both run from P to Q, but through different
+// cells' vertices, so the sheet is slit there and every slit is a cycle in
+// β1 (an 8° wedge with rungs: β1 123, 8,242 coincident vertices). Welding
+// vertices closer than a tolerance far below the sampling glues the slits.
+// Two rules keep the weld from doing harm where the coincident vertices are
+// not a slit (below): it drops no polygon that alone holds what it spans,
+// and it keeps no group of welds that adds cycles.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "cadmedial/edge_table.hpp"
+#include "cadmedial/polygon_complex.hpp"
+#include "cadmedial/union_find.hpp"
+
+namespace cadmedial {
+
+namespace {
+
+std::uint64_t edgeKey(Index a, Index b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | b;
+}
+
+std::size_t distinctCount(std::vector<std::uint64_t>& keys) {
+  std::sort(keys.begin(), keys.end());
+  return static_cast<std::size_t>(std::unique(keys.begin(), keys.end()) - keys.begin());
+}
+
+// A polygon the weld shrinks below three distinct corners spans a point
+// or a segment: a degenerate facet (the diagonal of four cocircular
+// samples, whose cells share two circumcenters) goes, since the point or
+// segment stays in the complex through other polygons. Where nothing
+// else holds it (a facet along the torus's core circle, the only link
+// there) dropping it broke loops and components (torus β1 1 -> 0,
+// fillet_chamfer_block β0 1 -> 8): its clusters then stay unwelded, and
+// as that can take a segment out of other polygons, until nothing changes.
+// `into` maps each vertex to the vertex it is welded into; refused clusters
+// map to themselves.
+void refuseCollapsesNothingHolds(const MedialComplex& mc, std::vector<Index>& into) {
+  const std::size_t nv = mc.vertices.size();
+  std::vector<std::uint8_t> refused(nv, 0);  // per cluster's first vertex
+  std::vector<std::uint8_t> collapses(mc.polygonCount(), 0);
+  auto mapped = [&](Index v) { return refused[into[v]] ? v : into[v]; };
+  std::vector<Index> corners;
+  auto distinctCorners = [&](std::size_t p) {
+    corners.clear();
+    for (Index k = mc.polygonOffsets[p]; k < mc.polygonOffsets[p + 1]; ++k) corners.push_back(mapped(mc.polygonVertices[k]));
+    std::sort(corners.begin(), corners.end());
+    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    return corners.size();
+  };
+  for (bool changed = true; changed;) {
+    changed = false;
+    // What the polygons that keep three corners hold: their vertices and edges.
+    std::vector<std::uint8_t> held(nv, 0);
+    PairTable heldEdges;
+    for (std::size_t p = 0; p < mc.polygonCount(); ++p) {
+      collapses[p] = distinctCorners(p) < 3;
+      if (collapses[p]) continue;
+      const Index b = mc.polygonOffsets[p], e = mc.polygonOffsets[p + 1];
+      for (Index k = b; k < e; ++k) {
+        const Index u = mapped(mc.polygonVertices[k]), w = mapped(mc.polygonVertices[k + 1 < e ? k + 1 : b]);
+        held[u] = 1;
+        if (u != w) heldEdges.insert(std::min(u, w), std::max(u, w), 1);
+      }
+    }
+    for (std::size_t p = 0; p < mc.polygonCount(); ++p) {
+      if (!collapses[p]) continue;
+      distinctCorners(p);
+      const bool spanHeld = corners.size() == 2 ? heldEdges.find(corners[0], corners[1]) != kNoIndex
+                                                : corners.size() == 1 && held[corners[0]];
+      if (spanHeld) continue;
+      for (Index k = mc.polygonOffsets[p]; k < mc.polygonOffsets[p + 1]; ++k) {
+        std::uint8_t& r = refused[into[mc.polygonVertices[k]]];
+        changed = changed || r == 0;
+        r = 1;
+      }
+    }
+  }
+  for (Index v = 0; v < nv; ++v) into[v] = mapped(v);
+}
+
+// Welding identifies points: where the polygons around coincident vertices
+// are not glued along edges by it as well (the centre of a corner sphere,
+// reached by fillet centre curves and fringe pieces through different
+// cells), it pinches the complex and adds cycles (a box with filleted
+// edges: β1 0 -> 9). Clusters joined through the polygons that touch them
+// form groups; a group's weld is kept only when it adds no cycle: Δβ1 =
+// Δβ0 − Δχ <= 0 (β2 taken as unchanged), with χ counted over the
+// vertices, edges and polygons the weld changes and β0 over the whole
+// complex. `into` maps each vertex to the vertex it is welded into;
+// refused groups map to themselves.
+void refuseWeldsThatAddCycles(const MedialComplex& mc, std::vector<Index>& into) {
+  const std::size_t nv = mc.vertices.size(), nf = mc.polygonCount();
+  std::vector<Index> members(nv, 0);
+  for (Index v = 0; v < nv; ++v) ++members[into[v]];
+  auto welds = [&](Index v) { return members[into[v]] > 1; };
+  UnionFind groups(nv), components(nv);
+  std::vector<std::uint8_t> touches(nf, 0);
+  for (std::size_t p = 0; p < nf; ++p) {
+    const Index b = mc.polygonOffsets[p], e = mc.polygonOffsets[p + 1];
+    Index first = kNoIndex;
+    for (Index k = b; k < e; ++k) {
+      const Index v = mc.polygonVertices[k];
+      components.unite(mc.polygonVertices[b], v);
+      if (!welds(v)) continue;
+      touches[p] = 1;
+      if (first == kNoIndex) first = into[v];
+      groups.unite(first, into[v]);
+    }
+  }
+  // Per group (by its root): the polygons touching it.
+  std::vector<std::vector<Index>> polygonsOf;
+  std::vector<Index> slot(nv, kNoIndex);
+  auto groupOf = [&](Index v) {
+    const Index r = groups.find(into[v]);
+    if (slot[r] == kNoIndex) {
+      slot[r] = static_cast<Index>(polygonsOf.size());
+      polygonsOf.emplace_back();
+    }
+    return slot[r];
+  };
+  for (std::size_t p = 0; p < nf; ++p) {
+    if (!touches[p]) continue;
+    for (Index k = mc.polygonOffsets[p]; k < mc.polygonOffsets[p + 1]; ++k)
+      if (welds(mc.polygonVertices[k])) {
+        polygonsOf[groupOf(mc.polygonVertices[k])].push_back(static_cast<Index>(p));
+        break;
+      }
+  }
+  std::vector<std::uint64_t> before, after, corners;
+  std::vector<Index> groupVertices;
+  for (const std::vector<Index>& polygons : polygonsOf) {
+    before.clear();
+    after.clear();
+    groupVertices.clear();
+    long long keptPolygons = 0;
+    for (Index p : polygons) {
+      const Index b = mc.polygonOffsets[p], e = mc.polygonOffsets[p + 1];
+      corners.clear();
+      for (Index k = b; k < e; ++k) corners.push_back(into[mc.polygonVertices[k]]);
+      const bool collapses = distinctCount(corners) < 3;
+      keptPolygons += collapses ? 0 : 1;
+      for (Index k = b; k < e; ++k) {
+        const Index u = mc.polygonVertices[k], w = mc.polygonVertices[k + 1 < e ? k + 1 : b];
+        if (welds(u)) groupVertices.push_back(u);
+        if (!welds(u) && !welds(w)) continue;
+        before.push_back(edgeKey(u, w));
+        if (!collapses && into[u] != into[w]) after.push_back(edgeKey(into[u], into[w]));
+      }
+    }
+    std::sort(groupVertices.begin(), groupVertices.end());
+    groupVertices.erase(std::unique(groupVertices.begin(), groupVertices.end()), groupVertices.end());
+    long long verticesAfter = 0;
+    for (Index v : groupVertices) verticesAfter += into[v] == v ? 1 : 0;
+    const long long dV = verticesAfter - static_cast<long long>(groupVertices.size());
+    const long long dE = static_cast<long long>(distinctCount(after)) - static_cast<long long>(distinctCount(before));
+    const long long dF = keptPolygons - static_cast<long long>(polygons.size());
+    // Components the weld joins (on a copy of the roots involved).
+    std::vector<std::pair<Index, Index>> joins;
+    for (Index v : groupVertices)
+      if (into[v] != v) joins.push_back({components.find(v), components.find(into[v])});
+    std::vector<Index> roots;
+    for (const auto& [a, c] : joins) roots.insert(roots.end(), {a, c});
+    std::sort(roots.begin(), roots.end());
+    roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
+    UnionFind local(roots.size());
+    auto localOf = [&](Index r) { return static_cast<Index>(std::lower_bound(roots.begin(), roots.end(), r) - roots.begin()); };
+    long long dB0 = 0;
+    for (const auto& [a, c] : joins) dB0 -= local.unite(localOf(a), localOf(c)) ? 1 : 0;
+    const long long dB1 = dB0 - (dV - dE + dF);
+    if (dB1 <= 0) {
+      for (const auto& [a, c] : joins) components.unite(a, c);
+    } else {
+      for (Index v : groupVertices) into[v] = v;
+    }
+  }
+}
+
+}  // namespace
+
+std::size_t weldCoincidentVertices(MedialComplex& mc, double tolerance) {
+  const std::size_t nv = mc.vertices.size();
+  if (!(tolerance > 0) || nv == 0) return 0;
+  // Voronoi vertices only (samples are distinct points). Sorted by x, a
+  // vertex's partners within the tolerance follow it within tolerance in x
+  // (almost never another vertex at this tolerance); a partner joins the
+  // smallest index of its cluster.
+  std::vector<Index> byX;
+  byX.reserve(nv);
+  for (Index v = 0; v < nv; ++v)
+    if (mc.vertexCell[v] != kNoIndex) byX.push_back(v);
+  std::sort(byX.begin(), byX.end(), [&](Index a, Index b) {
+    return mc.vertices[a][0] < mc.vertices[b][0] || (mc.vertices[a][0] == mc.vertices[b][0] && a < b);
+  });
+  UnionFind clusters(nv);
+  const double limit = tolerance * tolerance;
+  for (std::size_t i = 0; i < byX.size(); ++i) {
+    const Vec3& p = mc.vertices[byX[i]];
+    for (std::size_t j = i + 1; j < byX.size() && mc.vertices[byX[j]][0] - p[0] <= tolerance; ++j) {
+      const Vec3& q = mc.vertices[byX[j]];
+      const double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+      if (dx * dx + dy * dy + dz * dz <= limit) clusters.unite(byX[i], byX[j]);
+    }
+  }
+  std::vector<Index> into(nv, kNoIndex);  // per root, then per vertex: the smallest index of its cluster
+  for (Index v = 0; v < nv; ++v) {
+    Index& first = into[clusters.find(v)];
+    if (first == kNoIndex) first = v;
+  }
+  for (Index v = 0; v < nv; ++v) into[v] = into[clusters.find(v)];
+  refuseCollapsesNothingHolds(mc, into);
+  refuseWeldsThatAddCycles(mc, into);
+  std::size_t welded = 0;
+  for (Index v = 0; v < nv; ++v) welded += into[v] != v ? 1 : 0;
+  if (welded == 0) return 0;
+
+  // The cells whose vertex goes, with the cell of the vertex kept (the
+  // pair-mesh's sheet flags are per cell).
+  for (Index v = 0; v < nv; ++v)
+    if (into[v] != v) mc.weldedCells.push_back({mc.vertexCell[v], mc.vertexCell[into[v]]});
+  // Polygons on the kept vertices: a corner repeating the one before it
+  // goes (a zero-length edge), and so does a polygon left with fewer than
+  // three corners (one whose span other polygons hold, above).
+  std::vector<Index> vertices;
+  std::vector<Index> offsets{0};
+  std::vector<std::uint8_t> keep(mc.polygonCount(), 1);
+  for (std::size_t p = 0; p < mc.polygonCount(); ++p) {
+    const std::size_t start = vertices.size();
+    for (Index k = mc.polygonOffsets[p]; k < mc.polygonOffsets[p + 1]; ++k) {
+      const Index v = into[mc.polygonVertices[k]];
+      if (vertices.size() == start || vertices.back() != v) vertices.push_back(v);
+    }
+    while (vertices.size() > start + 1 && vertices.back() == vertices[start]) vertices.pop_back();
+    if (vertices.size() - start < 3) keep[p] = 0;
+    offsets.push_back(static_cast<Index>(vertices.size()));
+  }
+  mc.polygonVertices = std::move(vertices);
+  mc.polygonOffsets = std::move(offsets);
+  keepPolygons(mc, keep);  // also drops the vertices no polygon uses (the welded ones)
+  return welded;
+}
+
+}  // namespace cadmedial
