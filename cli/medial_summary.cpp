@@ -58,6 +58,7 @@ nlohmann::json medialSummaryJson(const SamplingReport& sampling, const MedialRes
                       {"point_islands_dropped", c.pointIslands},
                       {"forced_only_islands_dropped", c.forcedOnlyIslands},
                       {"coincident_vertices_welded", c.coincidentVerticesWelded},
+                      {"degenerate_facets_dropped", c.degenerateFacetsDropped},
                       {"walk_oracle_checked", c.oracleChecked},
                       {"walk_oracle_disagreements", c.oracleDisagreements}};
   j["seconds"] = {{"classify", sampling.secondsClassify},

@@ -110,7 +110,8 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
   }
   // After the rules above, which read one vertex per cell. Voronoi vertices
   // this close are one (cospherical samples).
-  r.counts.coincidentVerticesWelded = weldCoincidentVertices(r, 1e-9 * samples.bboxDiagonal());
+  r.counts.coincidentVerticesWelded =
+      weldCoincidentVertices(r, 1e-9 * samples.bboxDiagonal(), &r.counts.degenerateFacetsDropped);
   r.times.complex = watch.seconds();
 
   watch.restart();

@@ -96,7 +96,10 @@ void refuseCollapsesNothingHolds(const MedialComplex& mc, std::vector<Index>& in
 // Δβ0 − Δχ <= 0 (β2 taken as unchanged), with χ counted over the
 // vertices, edges and polygons the weld changes and β0 over the whole
 // complex. `into` maps each vertex to the vertex it is welded into;
-// refused groups map to themselves.
+// refused groups map to themselves. Needs refuseCollapsesNothingHolds
+// first: then what a dropped polygon spans is held by a polygon of the
+// same group, so no vertex or connection outside the counts is lost, and
+// groups (disjoint in polygons, edges and vertices) add up.
 void refuseWeldsThatAddCycles(const MedialComplex& mc, std::vector<Index>& into) {
   const std::size_t nv = mc.vertices.size(), nf = mc.polygonCount();
   std::vector<Index> members(nv, 0);
@@ -186,7 +189,8 @@ void refuseWeldsThatAddCycles(const MedialComplex& mc, std::vector<Index>& into)
 
 }  // namespace
 
-std::size_t weldCoincidentVertices(MedialComplex& mc, double tolerance) {
+std::size_t weldCoincidentVertices(MedialComplex& mc, double tolerance, std::size_t* facetsDropped) {
+  if (facetsDropped) *facetsDropped = 0;
   const std::size_t nv = mc.vertices.size();
   if (!(tolerance > 0) || nv == 0) return 0;
   // Voronoi vertices only (samples are distinct points). Sorted by x, a
@@ -228,7 +232,8 @@ std::size_t weldCoincidentVertices(MedialComplex& mc, double tolerance) {
     if (into[v] != v) mc.weldedCells.push_back({mc.vertexCell[v], mc.vertexCell[into[v]]});
   // Polygons on the kept vertices: a corner repeating the one before it
   // goes (a zero-length edge), and so does a polygon left with fewer than
-  // three corners (one whose span other polygons hold, above).
+  // three distinct corners (one whose span other polygons hold, above; A B
+  // A B counts as two).
   std::vector<Index> vertices;
   std::vector<Index> offsets{0};
   std::vector<std::uint8_t> keep(mc.polygonCount(), 1);
@@ -239,7 +244,11 @@ std::size_t weldCoincidentVertices(MedialComplex& mc, double tolerance) {
       if (vertices.size() == start || vertices.back() != v) vertices.push_back(v);
     }
     while (vertices.size() > start + 1 && vertices.back() == vertices[start]) vertices.pop_back();
-    if (vertices.size() - start < 3) keep[p] = 0;
+    std::vector<std::uint64_t> distinct(vertices.begin() + static_cast<std::ptrdiff_t>(start), vertices.end());
+    if (distinctCount(distinct) < 3) {
+      keep[p] = 0;
+      if (facetsDropped && mc.provenance[p] == PolygonProvenance::DelaunayEdgeFacet) ++*facetsDropped;
+    }
     offsets.push_back(static_cast<Index>(vertices.size()));
   }
   mc.polygonVertices = std::move(vertices);

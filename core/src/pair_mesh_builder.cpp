@@ -60,7 +60,10 @@ PairMeshBuilder::PairMeshBuilder(const DelaunayVoronoi& dv, const SampleSet& sam
       forEachCell(c, [&](Index x) {
         if (x < dv.cellCount()) sheetCells_[x] = 1;
         forEachCell(d, [&](Index y) { sheetVoronoiEdges_.insert(x, y, 1); });
-        if (x != c) sheetVoronoiEdges_.insert(c, x, 1);  // the zero-length edges the weld dropped
+        // The zero-length edges the weld dropped: between any two cells of the corner.
+        forEachCell(c, [&](Index y) {
+          if (x != y) sheetVoronoiEdges_.insert(x, y, 1);
+        });
       });
     }
   }

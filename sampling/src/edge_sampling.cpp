@@ -23,7 +23,7 @@ namespace {
 constexpr double kCurvatureFraction = FaceSpacingField::kCurvatureFraction;
 constexpr double kCornerBallFraction = 0.3;  // corner ball <= this × shortest incident edge
 constexpr double kLegFraction = 0.6;         // triplet leg = this × min(edge spacing, corner balls)
-constexpr double kRungWallFraction = 1.5;    // knife-edge rungs until the wedge is this × the edge spacing thick
+constexpr double kRungWallFraction = 1.0;    // knife-edge rungs until the chord across the wedge is this × the edge spacing
 constexpr double kRungGapFraction = 0.85;    // gap between rungs = this × the edge spacing (less up to 10 %)
 
 double edgeMinCurvatureRadius(const TopoDS_Edge& edge) {
@@ -346,21 +346,23 @@ gp_Pnt2d uvStep(const BRepAdaptor_Surface& surf, const gp_Pnt2d& uv, const gp_Ve
 }
 
 // Where the two faces of a convex edge meet at a small angle α (a knife
-// edge), the wedge at distance d from the edge is 2 d sin(α/2) thick:
-// thinner than the spacing out to d = spacing / (2 sin(α/2)), 7 spacings at
-// 8°. Face samples there, unpaired across a wall thinner than their
-// spacing, put Voronoi vertices far off the bisector and out of the solid
-// (an 8° wedge at h 1.69: vertices 0.17 mm outside at 0.8 mm from the
-// edge, the sheet in 130 pieces, β 2,19). Rungs continue a triplet's legs: pairs of samples at equal
-// distance from the edge sample in its normal plane, one on each face, out
-// to where the wedge is kRungWallFraction × the spacing thick. Each pair is
-// a mirror image across the bisector (exactly on planar faces), and the
-// Voronoi vertices between mirror pairs lie on it. Spaced like face samples
-// (a gap of ~0.85 × the edge spacing, with the face samples' exclusion
-// radius, so that darts keep out of the ladder); the ladder stops where
-// either rung of a pair would leave its face or come near another sample,
-// or no longer solves. Returns the
-// number of rung samples placed. Not in seed 002 (its triplets only).
+// edge), the chord across the wedge at distance d from the edge is
+// 2 d sin(α/2): shorter than the spacing out to d = spacing / (2 sin(α/2)),
+// 7 spacings at 8°. Face samples there, unpaired across a wall thinner
+// than their spacing, put Voronoi vertices far off the bisector and out of
+// the solid (an 8° wedge at h 1.69: vertices 0.17 mm outside at 0.8 mm
+// from the edge, the sheet in 130 pieces, β 2,19). Rungs continue a
+// triplet's legs: pairs of samples at equal distance from the edge sample
+// in its normal plane, one on each face, out to where that chord is
+// kRungWallFraction × the edge spacing (kMaxRungs at most). Each pair is a
+// mirror image across the bisector (exactly on planar faces), and the
+// Voronoi vertices between mirror pairs lie on it. Spaced like face
+// samples (a gap of ~0.85 × the edge spacing, with the face samples'
+// exclusion radius, so that darts keep out of the ladder); the ladder
+// stops where either rung of a pair would leave its face, come within half
+// a gap of another sample or inside its exclusion radius, or no longer
+// solves. Returns the number of rung samples placed. Not in seed 002 (its
+// triplets only).
 struct LadderSide {
   const BRepAdaptor_Surface* surf;
   int face;
@@ -370,31 +372,43 @@ struct LadderSide {
   gp_Pnt point;  // last rung's
 };
 
-std::size_t placeRungs(SamplingContext& ctx, SampleBuilder& builder, Index s, const gp_Pnt& sp, double leg, double step,
-                       double sinHalfAngle, unsigned edge, unsigned k, LadderSide sides[2]) {
-  const double reach = kRungWallFraction * step / (2 * sinHalfAngle);
+// One triplet's ladder, placed once every triplet is (a rung must not take
+// the spot of another edge's leg).
+struct Ladder {
+  Index s;
+  gp_Pnt sp;
+  double leg, step, sinHalfAngle;
+  unsigned edge, k;
+  LadderSide sides[2];
+};
+
+constexpr int kMaxRungs = 40;  // per side: a wedge of ~2° reaches that far
+
+std::size_t placeRungs(SamplingContext& ctx, SampleBuilder& builder, Ladder& ladder) {
+  const double reach = kRungWallFraction * ladder.step / (2 * ladder.sinHalfAngle);
   std::size_t placed = 0;
-  double d = leg;
-  for (unsigned rung = 1;; ++rung) {
-    const double gap = kRungGapFraction * step * (1.0 - 0.1 * legJitter(edge, 7919 * k + rung));
+  double d = ladder.leg;
+  for (unsigned rung = 1; rung <= kMaxRungs; ++rung) {
+    const double gap = kRungGapFraction * ladder.step * (1.0 - 0.1 * legJitter(ladder.edge, 7919 * ladder.k + rung));
     d += gap;
     if (d > reach) break;
     gp_Pnt2d uv[2];
     for (int i = 0; i < 2; ++i) {
-      LadderSide& side = sides[i];
-      gp_Vec out(sp, side.point);
+      LadderSide& side = ladder.sides[i];
+      gp_Vec out(ladder.sp, side.point);
       if (out.Magnitude() <= 0) return placed;
       out.Normalize();
       uv[i] = uvStep(*side.surf, side.uv, out * gap);
-      if (!solveLegPoint(*side.surf, sp, side.tangent, d, uv[i]) || side.classifier->Perform(uv[i]) != TopAbs_IN ||
-          !builder.isClear(side.surf->Value(uv[i].X(), uv[i].Y()), 0.5 * gap, s, false))
+      if (!solveLegPoint(*side.surf, ladder.sp, side.tangent, d, uv[i]) ||
+          side.classifier->Perform(uv[i]) != TopAbs_IN ||
+          !builder.isClear(side.surf->Value(uv[i].X(), uv[i].Y()), 0.5 * gap, ladder.s))
         return placed;
     }
     for (int i = 0; i < 2; ++i) {
-      LadderSide& side = sides[i];
+      LadderSide& side = ladder.sides[i];
       side.uv = uv[i];
       side.point = side.surf->Value(uv[i].X(), uv[i].Y());
-      ctx.recordFaceUv(builder.add(side.point, SampleKind::Face, side.face, 0.75 * step), uv[i]);
+      ctx.recordFaceUv(builder.add(side.point, SampleKind::Face, side.face, 0.75 * ladder.step), uv[i]);
       ++placed;
     }
   }
@@ -412,6 +426,13 @@ void placeTriplets(SamplingContext& ctx, SampleBuilder& builder) {
     if (!slot) slot = std::make_unique<BRepTopAdaptor_FClass2d>(topo.face(f), 1e-9);
     return *slot;
   };
+  std::map<int, std::unique_ptr<BRepAdaptor_Surface>> surfaces;  // the ladders' (kept past their edge)
+  auto surface = [&](int f) -> const BRepAdaptor_Surface& {
+    auto& slot = surfaces[f];
+    if (!slot) slot = std::make_unique<BRepAdaptor_Surface>(topo.face(f), false);
+    return *slot;
+  };
+  std::vector<Ladder> ladders;
 
   for (int e = 0; e < topo.edgeCount(); ++e) {
     if (ctx.edgeFeatures[e].kind != EdgeKind::Convex) continue;
@@ -471,18 +492,18 @@ void placeTriplets(SamplingContext& ctx, SampleBuilder& builder) {
         const double lengths = frames[0].intoFace.Magnitude() * frames[1].intoFace.Magnitude();
         const double cosAngle = lengths > 1e-300 ? frames[0].intoFace.Dot(frames[1].intoFace) / lengths : 1.0;
         const double sinHalfAngle = std::sqrt(std::max(0.0, 0.5 * (1 - cosAngle)));
-        if (sinHalfAngle > 0 && kRungWallFraction * step / (2 * sinHalfAngle) > leg + kRungGapFraction * step) {
-          LadderSide sides[2];
+        if (sinHalfAngle > 0 && kRungWallFraction * step / (2 * sinHalfAngle) > leg) {
+          Ladder ladder{s, sp, leg, step, sinHalfAngle, static_cast<unsigned>(e), static_cast<unsigned>(k), {}};
           for (int side = 0; side < 2; ++side)
-            sides[side] = {&surfs[side], faces[side], &classifier(faces[side]), frames[side].tangent, uv[side],
-                           surfs[side].Value(uv[side].X(), uv[side].Y())};
-          ctx.rungSamples += placeRungs(ctx, builder, s, sp, leg, step, sinHalfAngle, static_cast<unsigned>(e),
-                                        static_cast<unsigned>(k), sides);
+            ladder.sides[side] = {&surface(faces[side]), faces[side], &classifier(faces[side]), frames[side].tangent,
+                                  uv[side], surfs[side].Value(uv[side].X(), uv[side].Y())};
+          ladders.push_back(ladder);
         }
       }
       if (!placed) ++ctx.tripletsDropped;
     }
   }
+  for (Ladder& ladder : ladders) ctx.rungSamples += placeRungs(ctx, builder, ladder);
 }
 
 }  // namespace cadmedial

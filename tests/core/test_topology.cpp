@@ -223,8 +223,9 @@ TEST(Topology, CoincidentVoronoiVerticesAreWeldedIntoOne) {
   apart.vertices[3] = {1 + 1e-6, 0, 0};
   EXPECT_EQ(weldCoincidentVertices(apart, 1e-9), 0u);
   // No weld leaves a polygon with fewer than three corners when nothing
-  // else holds what it spans: the triangle 2-3-4 is what joins the quad
-  // to the coincident pair's other polygons (as on a torus's core circle).
+  // else holds what it spans: the triangle 2-3-4 is the only polygon with
+  // the edge 2-4 (as a facet along a torus's core circle is the only link
+  // there), so the coincident 2 and 3 stay apart.
   MedialComplex joint = complexOf(6, {{0, 1, 2}, {2, 3, 4}, {3, 5, 1}});
   joint.vertices[3] = {2, 1e-14, 0};
   EXPECT_EQ(weldCoincidentVertices(joint, 1e-9), 0u);

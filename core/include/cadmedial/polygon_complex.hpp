@@ -92,9 +92,11 @@ std::size_t dropForcedOnlyIslands(MedialComplex& complex, std::size_t* polygonsR
 // them; drops zero-length polygon edges and polygons left with fewer than
 // three corners (only where other polygons hold what they span), keeps a
 // group of welds only when it adds no cycle (β1 from χ and β0), and records
-// the cells joined in weldedCells. Returns the number of vertices welded
-// (coincident_vertices.cpp). Call before buildComplexEdges.
-std::size_t weldCoincidentVertices(MedialComplex& complex, double tolerance);
+// the cells joined in weldedCells. Returns the number of vertices welded;
+// *facetsDropped the Voronoi facets dropped (degenerate: a segment or a
+// point once welded). See coincident_vertices.cpp. Call before
+// buildComplexEdges.
+std::size_t weldCoincidentVertices(MedialComplex& complex, double tolerance, std::size_t* facetsDropped = nullptr);
 
 // Keeps the polygons with keep[i] != 0 (in order) and the vertices they use
 // (renumbered); sheets are reset.
