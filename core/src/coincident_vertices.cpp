@@ -23,11 +23,6 @@ namespace cadmedial {
 
 namespace {
 
-std::uint64_t edgeKey(Index a, Index b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(a) << 32) | b;
-}
-
 std::size_t distinctCount(std::vector<std::uint64_t>& keys) {
   std::sort(keys.begin(), keys.end());
   return static_cast<std::size_t>(std::unique(keys.begin(), keys.end()) - keys.begin());
@@ -155,8 +150,8 @@ void refuseWeldsThatAddCycles(const MedialComplex& mc, std::vector<Index>& into)
         const Index u = mc.polygonVertices[k], w = mc.polygonVertices[k + 1 < e ? k + 1 : b];
         if (welds(u)) groupVertices.push_back(u);
         if (!welds(u) && !welds(w)) continue;
-        before.push_back(edgeKey(u, w));
-        if (!collapses && into[u] != into[w]) after.push_back(edgeKey(into[u], into[w]));
+        before.push_back(PairTable::key(u, w));
+        if (!collapses && into[u] != into[w]) after.push_back(PairTable::key(into[u], into[w]));
       }
     }
     std::sort(groupVertices.begin(), groupVertices.end());
@@ -237,6 +232,7 @@ std::size_t weldCoincidentVertices(MedialComplex& mc, double tolerance, std::siz
   std::vector<Index> vertices;
   std::vector<Index> offsets{0};
   std::vector<std::uint8_t> keep(mc.polygonCount(), 1);
+  std::vector<std::uint64_t> distinct;
   for (std::size_t p = 0; p < mc.polygonCount(); ++p) {
     const std::size_t start = vertices.size();
     for (Index k = mc.polygonOffsets[p]; k < mc.polygonOffsets[p + 1]; ++k) {
@@ -244,7 +240,7 @@ std::size_t weldCoincidentVertices(MedialComplex& mc, double tolerance, std::siz
       if (vertices.size() == start || vertices.back() != v) vertices.push_back(v);
     }
     while (vertices.size() > start + 1 && vertices.back() == vertices[start]) vertices.pop_back();
-    std::vector<std::uint64_t> distinct(vertices.begin() + static_cast<std::ptrdiff_t>(start), vertices.end());
+    distinct.assign(vertices.begin() + static_cast<std::ptrdiff_t>(start), vertices.end());
     if (distinctCount(distinct) < 3) {
       keep[p] = 0;
       if (facetsDropped && mc.provenance[p] == PolygonProvenance::DelaunayEdgeFacet) ++*facetsDropped;

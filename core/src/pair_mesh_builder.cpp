@@ -39,9 +39,16 @@ PairMeshBuilder::PairMeshBuilder(const DelaunayVoronoi& dv, const SampleSet& sam
   sheetVoronoiEdges_.reserve(axis->polygonVertices.size());
   // A vertex the axis welded stands for several cells (coincident
   // circumcenters): each of them is on the sheets, and so is a Voronoi edge
-  // between any of the cells of two consecutive corners, or of one corner.
+  // between any of the cells of two consecutive corners, or of one corner
+  // (the zero-length edges the weld dropped).
   std::unordered_map<Index, std::vector<Index>> alsoCells;
   for (const auto& [welded, kept] : axis->weldedCells) alsoCells[kept].push_back(welded);
+  for (const auto& [kept, welded] : alsoCells) {
+    std::vector<Index> cells = welded;
+    cells.push_back(kept);
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      for (std::size_t j = i + 1; j < cells.size(); ++j) sheetVoronoiEdges_.insert(cells[i], cells[j], 1);
+  }
   auto forEachCell = [&](Index c, auto&& f) {
     if (c == kNoIndex) return;
     f(c);
@@ -60,10 +67,6 @@ PairMeshBuilder::PairMeshBuilder(const DelaunayVoronoi& dv, const SampleSet& sam
       forEachCell(c, [&](Index x) {
         if (x < dv.cellCount()) sheetCells_[x] = 1;
         forEachCell(d, [&](Index y) { sheetVoronoiEdges_.insert(x, y, 1); });
-        // The zero-length edges the weld dropped: between any two cells of the corner.
-        forEachCell(c, [&](Index y) {
-          if (x != y) sheetVoronoiEdges_.insert(x, y, 1);
-        });
       });
     }
   }

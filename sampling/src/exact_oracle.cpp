@@ -244,8 +244,8 @@ struct FaceSolver {
   // cross-section circle is as near: OCCT's IsMinDist said no there, and
   // such a query then ran the global grid search: on a helical spring 65 %
   // of the B-spline face queries did, 6 % with this test). A saddle or
-  // maximum has a direction in which
-  // the distance drops by about the curvature times the step squared. For
+  // maximum has a direction in which the distance drops by about the
+  // curvature times the step squared. For
   // the nearest point only: where all near contacts are wanted (two
   // contacts), OCCT's stricter test keeps sending such points to the global
   // search, which finds the other walls of a U-shaped face (with this test
