@@ -15,6 +15,7 @@
 #include <TopoDS.hxx>
 
 #include "face_spacing_field.hpp"
+#include "narrow_faces.hpp"
 #include "sampling_context.hpp"
 
 namespace cadmedial {
@@ -117,25 +118,40 @@ std::vector<double> sampleArcs(const std::vector<std::array<double, 2>>& profile
 // two for 15 % of its vertices). So each face near a convex edge is graded
 // from the edge's spacing (the finer face's, computeSpacings), growing by
 // kConvexEdgeGrading per unit of distance from it.
-void gradeFacesFromConvexEdges(SamplingContext& ctx) {
+// A narrow face (narrowFaceSources, `sources` here) is finer near its close
+// edges, and where such an edge is convex the face across takes that on too,
+// near where the face is narrow only (the riser of a step makes the tread
+// and the floor fine along it, and along its ends' edges only near it). A
+// field holds one set of sources: the narrow faces' and the convex edges'.
+void gradeFacesFromConvexEdges(SamplingContext& ctx, std::vector<std::vector<FaceSpacingField::Source>> sources) {
   const SolidTopology& topo = ctx.topo;
-  std::vector<std::vector<FaceSpacingField::Source>> sources(topo.faceCount());
+  std::vector<std::unique_ptr<SpacingSources>> narrow(topo.faceCount());
+  for (int f = 0; f < topo.faceCount(); ++f)
+    if (!sources[f].empty()) narrow[f] = std::make_unique<SpacingSources>(sources[f], FaceSpacingField::kConvexEdgeGrading);
   for (int e = 0; e < topo.edgeCount(); ++e) {
     if (topo.edgeDegenerate[e] || ctx.edgeFeatures[e].kind != EdgeKind::Convex) continue;
     const double s = ctx.edgeSpacing[e];
-    if (!(s < ctx.spacing)) continue;  // nothing finer to pass on
+    double finest = s;
+    for (int f : topo.edgeFaces[e])
+      if (f >= 0 && narrow[f]) finest = std::min(finest, std::max(ctx.minSpacing, narrow[f]->finest()));
+    if (!(finest < ctx.spacing)) continue;  // nothing finer to pass on
     BRepAdaptor_Curve curve(topo.edge(e));
-    // Points the edge's spacing apart, as many as the edge's own samples
-    // (the k-d tree of SpacingSources takes them all): a point's distance
-    // to the edge is off by at most s / 2, its spacing by
-    // kConvexEdgeGrading × s / 2. (At most 257 while the grading lived on the
-    // field's nodes only: a 1000 mm edge at s 1 then allowed 2 next to it.)
+    // Points the finest spacing apart, as many as the edge's own samples
+    // there (the k-d tree of SpacingSources takes them all): a point's
+    // distance to the edge is off by at most finest / 2, its spacing by
+    // kConvexEdgeGrading × finest / 2. (At most 257 while the grading lived
+    // on the field's nodes only: a 1000 mm edge at 1 then allowed 2 next to it.)
     const double length = ctx.edgeFeatures[e].length;
-    const double points = std::ceil(length / s);
+    const double points = std::ceil(length / finest);
     const int n = std::isfinite(points) ? static_cast<int>(std::clamp(points, 2.0, 1e7)) : 2;
     std::vector<FaceSpacingField::Source> along;
-    for (int i = 0; i <= n; ++i)
-      along.push_back({curve.Value(curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n), s});
+    for (int i = 0; i <= n; ++i) {
+      const gp_Pnt p = curve.Value(curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n);
+      double spacing = s;
+      for (int f : topo.edgeFaces[e])
+        if (f >= 0 && narrow[f]) spacing = std::max(ctx.minSpacing, narrow[f]->allowedNear(p, 0, spacing));
+      if (spacing < ctx.spacing) along.push_back({p, spacing});
+    }
     for (int f : topo.edgeFaces[e])
       if (f >= 0) sources[f].insert(sources[f].end(), along.begin(), along.end());
   }
@@ -205,7 +221,8 @@ void computeSpacings(SamplingContext& ctx) {
   // edge at its finest value over its whole length: on CTC-01 141 of 418
   // edges, 1.8 k edge samples (and their triplets) more.
   if (ctx.gradedSpacing) {
-    gradeFacesFromConvexEdges(ctx);
+    gradeFacesFromConvexEdges(
+        ctx, narrowFaceSources(topo, ctx.minSpacing, ctx.spacing, FaceSpacingField::kWidthFraction * ctx.boundsScale));
     spaceEdges(true);
   }
 

@@ -25,6 +25,7 @@ class FaceSpacingField {
  public:
   static constexpr double kCurvatureFraction = 0.15;  // spacing <= this × radius of curvature (chord error ~0.3 %)
   static constexpr double kThicknessFraction = 0.4;   // spacing <= this × local wall thickness
+  static constexpr double kWidthFraction = 0.5;       // spacing <= this × the face's local width (narrow_faces.hpp)
   static constexpr double kGrading = 0.15;            // spacing grows by at most this × distance
   // Away from a convex edge whose spacing is finer than the face's (a hole's
   // rim in a plate, computeSpacings): a ball of the edge's sheet touching the
