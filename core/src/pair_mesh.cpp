@@ -62,7 +62,8 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
   mesh.seconds = watch.seconds();
   watch.restart();
   if (repair) {
-    std::size_t inverted = repairFlippedElements(mesh, dv);
+    std::size_t needingRepair = 0;
+    std::size_t inverted = repairFlippedElements(mesh, dv, {}, &needingRepair);
     // Last resort, up to ten passes: the boundary cells whose Voronoi
     // nodes the repair could not place go outer or, failing that, the outer
     // cells across the inverted elements' boundary facets go inner; first
@@ -83,7 +84,6 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
     // sweep run that reaches the cap).
     const double budget = inverted > 0 ? 1e-3 * std::abs(boundaryEnclosedVolume(mesh)) : 0;
     double changed = 0;
-    std::size_t needingRepair = inverted > 0 ? countElementsNeedingRepair(mesh.nodes, mesh.tets) : 0;
     // The inverted volume only decides ties on the count: it is walked
     // for when one comes up (negative: not known yet).
     double invertedVolumeNow = -1;
@@ -105,8 +105,10 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
         keepRepairedPositions(mesh, trial);
       }
       trial.counts.movedNodes = trial.counts.retriangulatedPolygons = 0;
-      const std::size_t trialInverted = repairFlippedElements(trial, dv, 12, /*weldCloseNodes=*/false);
-      const std::size_t trialNeedingRepair = countElementsNeedingRepair(trial.nodes, trial.tets);
+      RepairOptions again;
+      again.weldCloseNodes = again.countInvertedBefore = false;
+      std::size_t trialNeedingRepair = 0;
+      const std::size_t trialInverted = repairFlippedElements(trial, dv, again, &trialNeedingRepair);
       // Fewer inverted, or as many with less volume inverted (a fold pushed
       // to a smaller cell, which the next pass may remove): the pair (count,
       // volume) only decreases, so the passes cannot cycle.

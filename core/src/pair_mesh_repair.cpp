@@ -11,6 +11,7 @@
 #include <optional>
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "cadmedial/pair_mesh.hpp"
@@ -83,14 +84,16 @@ std::size_t countNegative(const PairMesh& m) {
 }
 
 // Rounds of Voronoi node moves (first case of §4.1); marks moved nodes.
-// Returns the number of elements left needing repair (negative or flat).
-std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds, std::vector<std::uint8_t>& moved) {
+// Returns the number of elements left needing repair (negative or flat),
+// and flags them in badFlag (per element).
+std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds, std::vector<std::uint8_t>& moved,
+                             std::vector<std::uint8_t>& badFlag) {
   const std::size_t n = m.nodes.size();
   moved.resize(n, 0);
   // Per element: needs repair. Kept current as nodes move (only the
   // elements around a moved node change, and the polygons re-triangulated
   // update theirs), so that no round has to test all elements again.
-  std::vector<std::uint8_t> badFlag(m.tets.size(), 0);
+  badFlag.assign(m.tets.size(), 0);
   auto countFlagged = [&badFlag]() { return static_cast<std::size_t>(std::count(badFlag.begin(), badFlag.end(), 1)); };
   auto flagAll = [&]() {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.tets.size()), [&](const auto& r) {
@@ -318,16 +321,28 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance) {
   // Most nodes join none; only those that do are gathered, and only theirs
   // is the incidence below (on the lever, 58 k lone nodes took half the
   // weld's time).
+  // The close pairs: every element's six, tested in parallel (few are close;
+  // a serial pass was a fifth of the lever's first repair).
+  const double limit = tolerance * tolerance;
+  tbb::enumerable_thread_specific<std::vector<std::array<Index, 2>>> closePairs;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.tets.size()), [&](const auto& r) {
+    auto& found = closePairs.local();
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      const auto& t = m.tets[i];
+      for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b)
+          if (!m.isBoundaryNode(t[a]) && !m.isBoundaryNode(t[b]) && squaredLength(m.nodes[t[a]], m.nodes[t[b]]) <= limit)
+            found.push_back({t[a], t[b]});
+    }
+  });
+  // Clusters and their members' order do not depend on the order of the unions.
   UnionFind joined(n);
   std::vector<std::uint8_t> inPair(n, 0);
-  const double limit = tolerance * tolerance;
-  for (const auto& t : m.tets)
-    for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b)
-        if (!m.isBoundaryNode(t[a]) && !m.isBoundaryNode(t[b]) && squaredLength(m.nodes[t[a]], m.nodes[t[b]]) <= limit) {
-          joined.unite(t[a], t[b]);
-          inPair[t[a]] = inPair[t[b]] = 1;
-        }
+  for (const auto& found : closePairs)
+    for (const auto& [a, b] : found) {
+      joined.unite(a, b);
+      inPair[a] = inPair[b] = 1;
+    }
   std::vector<std::vector<Index>> clusters;
   {
     std::vector<Index> slot(n, kNoIndex);
@@ -391,17 +406,21 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance) {
 
 }  // namespace
 
-std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, int rounds, bool weldCloseNodes) {
-  m.counts.invertedBeforeRepair = countNegative(m);
-  if (weldCloseNodes) m.counts.weldedNodes += weldCloseVoronoiNodes(m, m.spacing / 200);
-  std::vector<std::uint8_t> moved;
-  std::size_t needingRepair = moveVoronoiNodes(m, dv, rounds, moved);
+std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, const RepairOptions& options,
+                                  std::size_t* needingRepairLeft) {
+  if (options.countInvertedBefore) m.counts.invertedBeforeRepair = countNegative(m);
+  if (options.weldCloseNodes) m.counts.weldedNodes += weldCloseVoronoiNodes(m, m.spacing / 200);
+  std::vector<std::uint8_t> moved, needsRepairFlag;
+  std::size_t needingRepair = moveVoronoiNodes(m, dv, options.rounds, moved, needsRepairFlag);
   if (needingRepair > 0) {
-    m.counts.splitEdges = splitBoundaryEdges(m);
-    if (m.counts.splitEdges > 0) needingRepair = moveVoronoiNodes(m, dv, rounds, moved);
+    m.counts.splitEdges = splitBoundaryEdges(m);  // none kept: the mesh and its flags as they were
+    if (m.counts.splitEdges > 0) needingRepair = moveVoronoiNodes(m, dv, options.rounds, moved, needsRepairFlag);
   }
-  // Inverted elements are among those needing repair: none left, no pass.
-  const std::size_t bad = needingRepair > 0 ? countNegative(m) : 0;
+  // Inverted elements are among those flagged as needing repair: only they are tested.
+  std::size_t bad = 0;
+  if (needingRepair > 0)
+    for (std::size_t i = 0; i < m.tets.size(); ++i) bad += needsRepairFlag[i] && isInverted(m, i) ? 1 : 0;
+  if (needingRepairLeft) *needingRepairLeft = needingRepair;
   m.counts.movedNodes = static_cast<std::size_t>(std::count(moved.begin(), moved.end(), 1));
   m.counts.invertedAfterRepair = bad;
   return bad;

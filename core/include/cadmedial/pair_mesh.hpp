@@ -116,11 +116,20 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
 // non-negative, or failing that by the step that leaves the fewest negative.
 // Then every boundary edge with a negative Edge-Edge element that node moves
 // could not fix is split (splitBoundaryEdges) and the nodes are moved again.
-// Updates the counts; returns the number of negative elements left.
-// weldCloseNodes: first put clusters of Voronoi nodes closer than h/200 on
-// one position where that leaves no more elements to repair around them.
-std::size_t repairFlippedElements(PairMesh& mesh, const DelaunayVoronoi& dv, int rounds = 12,
-                                  bool weldCloseNodes = true);
+// Updates the counts; returns the number of negative elements left, and
+// in *needingRepair (when given) the number of elements left negative or
+// flat (elementNeedsRepair).
+struct RepairOptions {
+  int rounds = 12;  // of node moves
+  // First put clusters of Voronoi nodes closer than h/200 on one position
+  // where that leaves no more elements to repair around them.
+  bool weldCloseNodes = true;
+  // Set counts.invertedBeforeRepair (a pass over every element); off where
+  // the caller keeps that count itself (the relabelling trials).
+  bool countInvertedBefore = true;
+};
+std::size_t repairFlippedElements(PairMesh& mesh, const DelaunayVoronoi& dv, const RepairOptions& options = {},
+                                  std::size_t* needingRepair = nullptr);
 
 // Seed 003 §4.1, second case: a boundary edge ab that misses its Voronoi cut
 // face (the chain of inner Voronoi nodes around it) folds some of its
