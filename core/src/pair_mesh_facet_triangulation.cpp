@@ -108,22 +108,44 @@ std::pair<std::vector<std::array<Index, 3>>, Score> bestTriangulation(const std:
 
 }  // namespace
 
-std::size_t retriangulateFaceVertexPolygons(PairMesh& m, std::vector<std::uint8_t>* needsRepair) {
-  // Only the polygons holding a bad element, each with its element slots.
-  std::unordered_map<std::uint64_t, std::vector<std::size_t>> slots;
-  for (std::size_t i = 0; i < m.tets.size(); ++i)
+std::size_t retriangulateFaceVertexPolygons(PairMesh& m, std::vector<std::uint8_t>* needsRepair,
+                                            std::vector<std::size_t>* flagged, PolygonSlots* known) {
+  // Only the polygons holding a bad element.
+  std::vector<std::uint64_t> keys;
+  auto consider = [&](std::size_t i) {
     if (m.type[i] == PairElementType::FaceVertex &&
         (needsRepair ? (*needsRepair)[i] != 0 : elementNeedsRepair(m.nodes, m.tets[i])))
-      slots[facetKey(m.medialSimplex[i])];
-  if (slots.empty()) return 0;
-  for (std::size_t i = 0; i < m.tets.size(); ++i)
-    if (m.type[i] == PairElementType::FaceVertex) {
-      const auto it = slots.find(facetKey(m.medialSimplex[i]));
-      if (it != slots.end()) it->second.push_back(i);
-    }
+      keys.push_back(facetKey(m.medialSimplex[i]));
+  };
+  if (needsRepair && flagged) {
+    for (std::size_t i : *flagged) consider(i);
+  } else {
+    for (std::size_t i = 0; i < m.tets.size(); ++i) consider(i);
+  }
+  if (keys.empty()) return 0;
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  // Each with its element slots: those of polygons not met before from one
+  // pass over the elements.
+  PolygonSlots local;
+  PolygonSlots& slots = needsRepair && known ? *known : local;
+  PolygonSlots fresh;
+  for (std::uint64_t key : keys)
+    if (!slots.count(key)) fresh[key];
+  if (!fresh.empty()) {
+    for (std::size_t i = 0; i < m.tets.size(); ++i)
+      if (m.type[i] == PairElementType::FaceVertex) {
+        const auto it = fresh.find(facetKey(m.medialSimplex[i]));
+        if (it != fresh.end()) it->second.push_back(i);
+      }
+    for (auto& [key, elements] : fresh) slots.emplace(key, std::move(elements));
+  }
 
+  // One polygon's choice does not depend on another's (their elements are
+  // apart, their nodes do not move here): any order gives the same mesh.
   std::size_t changed = 0;
-  for (const auto& [key, elements] : slots) {
+  for (std::uint64_t key : keys) {
+    const std::vector<std::size_t>& elements = slots.at(key);
     const Index a = m.tets[elements[0]][0];
     Index b = kNoIndex;
     std::vector<std::array<Index, 3>> current;
@@ -147,7 +169,10 @@ std::size_t retriangulateFaceVertexPolygons(PairMesh& m, std::vector<std::uint8_
       m.boundarySimplex[elements[2 * t + 1]] = {b, kNoIndex, kNoIndex};
     }
     if (needsRepair)
-      for (std::size_t i : elements) (*needsRepair)[i] = elementNeedsRepair(m.nodes, m.tets[i]) ? 1 : 0;
+      for (std::size_t i : elements) {
+        (*needsRepair)[i] = elementNeedsRepair(m.nodes, m.tets[i]) ? 1 : 0;
+        if (flagged && (*needsRepair)[i]) flagged->push_back(i);
+      }
     ++changed;
   }
   return changed;

@@ -94,12 +94,25 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
   // elements around a moved node change, and the polygons re-triangulated
   // update theirs), so that no round has to test all elements again.
   badFlag.assign(m.tets.size(), 0);
-  auto countFlagged = [&badFlag]() { return static_cast<std::size_t>(std::count(badFlag.begin(), badFlag.end(), 1)); };
+  // The elements flagged, so that a round looks at those only (a few
+  // hundred among 10^5-10^6): every flagged element is listed; elements
+  // flagged no more, and repeats, until the next count.
+  std::vector<std::size_t> flagged;
+  auto countFlagged = [&]() {
+    std::sort(flagged.begin(), flagged.end());
+    flagged.erase(std::unique(flagged.begin(), flagged.end()), flagged.end());
+    flagged.erase(std::remove_if(flagged.begin(), flagged.end(), [&](std::size_t i) { return badFlag[i] == 0; }),
+                  flagged.end());
+    return flagged.size();
+  };
   auto flagAll = [&]() {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.tets.size()), [&](const auto& r) {
       for (std::size_t i = r.begin(); i != r.end(); ++i) badFlag[i] = needsRepair(m, i) ? 1 : 0;
     });
-    return countFlagged();
+    flagged.clear();
+    for (std::size_t i = 0; i < m.tets.size(); ++i)
+      if (badFlag[i]) flagged.push_back(i);
+    return flagged.size();
   };
   auto negative = [&badFlag](std::size_t i) { return badFlag[i] != 0; };
   // Node -> incident tetrahedra (CSR); rebuilt when polygons are re-triangulated.
@@ -121,8 +134,15 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
   };
 
   auto flagAround = [&](Index v) {
-    for (Index k = offsets[v]; k < offsets[v + 1]; ++k) badFlag[incident[k]] = needsRepair(m, incident[k]) ? 1 : 0;
+    for (Index k = offsets[v]; k < offsets[v + 1]; ++k) {
+      const Index i = incident[k];
+      badFlag[i] = needsRepair(m, i) ? 1 : 0;
+      if (badFlag[i]) flagged.push_back(i);
+    }
   };
+  // The polygons the re-triangulations met, with their element slots (no
+  // element changes its slot in here).
+  PolygonSlots polygonSlots;
 
   // Negative elements around a set of nodes, each element counted once.
   std::vector<std::uint32_t> seen(m.tets.size(), 0);
@@ -225,18 +245,18 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
     // change nothing either.
     bool changedMesh = false;
     // Moves fold Voronoi polygons that another triangulation keeps positive.
-    if (const std::size_t changed = retriangulateFaceVertexPolygons(m, &badFlag)) {
+    if (const std::size_t changed = retriangulateFaceVertexPolygons(m, &badFlag, &flagged, &polygonSlots)) {
       changedMesh = true;
       m.counts.retriangulatedPolygons += changed;
       buildIncidence();
       bad = countFlagged();
       if (bad == 0) break;
     }
+    countFlagged();
     std::vector<Index> candidates;
-    for (std::size_t i = 0; i < m.tets.size(); ++i)
-      if (negative(i))
-        for (Index v : m.tets[i])
-          if (!m.isBoundaryNode(v)) candidates.push_back(v);
+    for (std::size_t i : flagged)
+      for (Index v : m.tets[i])
+        if (!m.isBoundaryNode(v)) candidates.push_back(v);
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
     for (Index v : candidates) {
@@ -298,7 +318,7 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
     }
   }
   if (bad > 0) {
-    if (const std::size_t changed = retriangulateFaceVertexPolygons(m, &badFlag)) {
+    if (const std::size_t changed = retriangulateFaceVertexPolygons(m, &badFlag, &flagged, &polygonSlots)) {
       m.counts.retriangulatedPolygons += changed;
       bad = countFlagged();
     }
