@@ -14,8 +14,10 @@ gaps") and the issue notes: thin_ring needed the third sampling attempt
 helix_spring (B-spline search) and misread t_pipe's branch axis (both
 mended); two contacts on box_fillet_all (51 %) and t_pipe (85 %) rose to
 74 % and 95 % with the fringe thinning (box_fillet_all still under 90 %);
-still open: shallow convex edges on loft_circle_square, cone_apex and
-box_fillet_variable, topology of small_step and sharp_wedge.
+since mended: cone_apex (edges, with edges following their faces' spacing),
+sharp_wedge (knife-edge rungs and the weld of coincident Voronoi vertices),
+small_step (narrow faces); still open (2026-12-03): shallow convex edges on
+loft_circle_square and box_fillet_variable, two contacts on box_fillet_all.
 """
 import math
 import os

@@ -10,6 +10,7 @@
 #include <Extrema_ExtPC.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GCPnts_UniformAbscissa.hxx>
+#include <Standard_Failure.hxx>
 
 namespace cadmedial {
 
@@ -81,18 +82,27 @@ std::vector<std::vector<FaceSpacingField::Source>> narrowFaceSources(const Solid
         if (shareVertex(topo, a, b) || boxes[a].IsVoid() || boxes[b].IsVoid() ||
             boxes[a].Distance(boxes[b]) >= reach)
           continue;
-        BRepExtrema_DistShapeShape nearest(topo.edge(a), topo.edge(b));
-        if (!nearest.IsDone() || !(nearest.Value() < reach)) continue;
-        const double step = std::clamp(fraction * nearest.Value(), floor, cap);
-        // Each edge's points ask for fraction × their own distance to the
-        // other edge: where the two part, the face is wide again.
-        for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
-          const BRepAdaptor_Curve source(topo.edge(from)), other(topo.edge(to));
-          for (const gp_Pnt& p : pointsAlong(source, step)) {
-            const double spacing = std::clamp(fraction * distanceToCurve(p, other), floor, cap);
-            if (spacing < cap) sources[f].push_back({p, spacing});
+        // A pair OCCT cannot measure (a broken curve in a hostile file)
+        // asks for nothing: the rest of the sampling copes with it or
+        // reports it.
+        std::vector<FaceSpacingField::Source> found;
+        try {
+          BRepExtrema_DistShapeShape nearest(topo.edge(a), topo.edge(b));
+          if (!nearest.IsDone() || !(nearest.Value() < reach)) continue;
+          const double step = std::clamp(fraction * nearest.Value(), floor, cap);
+          // Each edge's points ask for fraction × their own distance to the
+          // other edge: where the two part, the face is wide again.
+          for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
+            const BRepAdaptor_Curve source(topo.edge(from)), other(topo.edge(to));
+            for (const gp_Pnt& p : pointsAlong(source, step)) {
+              const double spacing = std::clamp(fraction * distanceToCurve(p, other), floor, cap);
+              if (spacing < cap) found.push_back({p, spacing});
+            }
           }
+        } catch (const Standard_Failure&) {
+          continue;
         }
+        sources[f].insert(sources[f].end(), found.begin(), found.end());
       }
   }
   return sources;
