@@ -2,55 +2,190 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepTools_WireExplorer.hxx>
 #include <Bnd_Box.hxx>
 #include <Extrema_ExtPC.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GCPnts_UniformAbscissa.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 
 namespace cadmedial {
 
 namespace {
 
-constexpr int kMaxPointsPerEdge = 4096;
+constexpr int kMaxCoarsePoints = 4096;
+constexpr std::size_t kMaxPointsPerEdge = 100000;
+// Two points of a face's boundary make it narrow when the way between them
+// along the boundary is at least this × their distance: across a step's
+// riser (100 mm round, 0.2 across), not where one edge of a line split in
+// three meets the next through a short piece (the way is the distance).
+constexpr double kPathRatio = 2.0;
 
-// Distance from p to the edge behind `curve` (its ends included).
-double distanceToCurve(const gp_Pnt& p, const BRepAdaptor_Curve& curve) {
-  double best = std::min(p.SquareDistance(curve.Value(curve.FirstParameter())),
-                         p.SquareDistance(curve.Value(curve.LastParameter())));
-  Extrema_ExtPC extrema(p, curve);
-  if (extrema.IsDone())
-    for (int i = 1; i <= extrema.NbExt(); ++i) best = std::min(best, extrema.SquareDistance(i));
-  return std::sqrt(best);
+// Where an edge sits in its face's boundary: its wire, the arc length of
+// the wire before it (in the wire's order) and the edge's direction in it.
+struct WireSpot {
+  int wire = -1;
+  double start = 0, length = 0;
+  bool forward = true;
+};
+
+// Per edge of the face (by edge id), its spot; per wire, its length.
+struct FaceBoundary {
+  std::vector<WireSpot> spots;  // indexed by edge id; wire -1 where not on the face
+  std::vector<double> perimeter;
+
+  // Arc position along its wire of the point `arc` from the start of edge e's curve.
+  double position(int e, double arc) const {
+    const WireSpot& s = spots[e];
+    return s.start + (s.forward ? arc : s.length - arc);
+  }
+  // The way along the boundary between two points (+inf on different wires).
+  double way(int a, double arcA, int b, double arcB) const {
+    if (spots[a].wire != spots[b].wire) return std::numeric_limits<double>::infinity();
+    const double apart = std::abs(position(a, arcA) - position(b, arcB));
+    return std::min(apart, perimeter[spots[a].wire] - apart);
+  }
+};
+
+FaceBoundary boundaryOf(const SolidTopology& topo, int f) {
+  FaceBoundary fb;
+  fb.spots.assign(topo.edgeCount(), {});
+  const TopoDS_Face& face = topo.face(f);
+  for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
+    const int wire = static_cast<int>(fb.perimeter.size());
+    double along = 0;
+    for (BRepTools_WireExplorer ex(TopoDS::Wire(w.Current()), face); ex.More(); ex.Next()) {
+      const int e = topo.edges.FindIndex(ex.Current()) - 1;
+      if (e < 0 || topo.edgeDegenerate[e]) continue;
+      const double length = GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(topo.edge(e)));
+      if (fb.spots[e].wire < 0)  // a seam is met twice: its first passage stands
+        fb.spots[e] = {wire, along, length, ex.Current().Orientation() != TopAbs_REVERSED};
+      along += length;
+    }
+    fb.perimeter.push_back(along);
+  }
+  return fb;
 }
 
-// Points along `curve` about `step` apart (both ends included).
-std::vector<gp_Pnt> pointsAlong(const BRepAdaptor_Curve& curve, double step) {
-  const double length = GCPnts_AbscissaPoint::Length(curve);
-  const double wanted = std::ceil(length / step);
-  const int n = std::isfinite(wanted) ? static_cast<int>(std::clamp(wanted, 1.0, double(kMaxPointsPerEdge))) : 1;
-  std::vector<gp_Pnt> points;
-  GCPnts_UniformAbscissa even(curve, n + 1);
-  if (even.IsDone() && even.NbPoints() == n + 1) {
-    for (int i = 1; i <= even.NbPoints(); ++i) points.push_back(curve.Value(even.Parameter(i)));
-  } else {  // even in the parameter: the points are a guide, not samples
+// Arc length from the start of `curve` to parameter u.
+double arcTo(const BRepAdaptor_Curve& curve, double u) {
+  return u > curve.FirstParameter() ? GCPnts_AbscissaPoint::Length(curve, curve.FirstParameter(), u) : 0.0;
+}
+
+struct Partner {
+  int edge;
+  BRepAdaptor_Curve curve;
+  Bnd_Box near;  // its box grown by the reach: points outside are too far to ask
+};
+
+// Points of `curve` (parameters and arc lengths from its start) about `step`
+// apart where `curve` comes within the reach of a partner: the edge is first
+// cut into pieces at most reach / 4 long, and only pieces with an end in a
+// partner's grown box are sampled at `step`.
+std::vector<std::pair<double, double>> pointsNearPartners(const BRepAdaptor_Curve& curve, double length, double step,
+                                                          double reach, const std::vector<Partner>& partners) {
+  const double piece = std::max(step, reach / 4);
+  const int n = static_cast<int>(std::clamp(std::ceil(length / piece), 1.0, double(kMaxCoarsePoints)));
+  std::vector<double> params;
+  GCPnts_UniformAbscissa coarse(curve, n + 1);
+  if (coarse.IsDone() && coarse.NbPoints() == n + 1) {
+    for (int i = 1; i <= coarse.NbPoints(); ++i) params.push_back(coarse.Parameter(i));
+  } else {
     for (int i = 0; i <= n; ++i)
-      points.push_back(curve.Value(curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n));
+      params.push_back(curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n);
+  }
+  auto nearSome = [&](double u) {
+    const gp_Pnt p = curve.Value(u);
+    return std::any_of(partners.begin(), partners.end(), [&](const Partner& q) { return !q.near.IsOut(p); });
+  };
+  std::vector<std::pair<double, double>> points;  // (parameter, arc)
+  std::vector<char> near(params.size());
+  for (std::size_t i = 0; i < params.size(); ++i) near[i] = nearSome(params[i]);
+  for (int i = 0; i < n && points.size() < kMaxPointsPerEdge; ++i) {
+    if (!near[i] && !near[i + 1]) continue;
+    const double arc0 = length * i / n, arc1 = length * (i + 1) / n;
+    const int k = static_cast<int>(std::clamp(std::ceil((arc1 - arc0) / step), 1.0, double(kMaxPointsPerEdge)));
+    GCPnts_UniformAbscissa fine(curve, k + 1, params[i], params[i + 1]);
+    const bool even = fine.IsDone() && fine.NbPoints() == k + 1;
+    for (int j = (points.empty() || points.back().first != params[i]) ? 0 : 1; j <= k; ++j) {
+      const double u = even ? fine.Parameter(j + 1) : params[i] + (params[i + 1] - params[i]) * j / k;
+      points.push_back({u, arc0 + (arc1 - arc0) * j / k});
+    }
   }
   return points;
 }
 
 bool shareVertex(const SolidTopology& topo, int a, int b) {
-  const auto& va = topo.edgeVertices[a];
-  const auto& vb = topo.edgeVertices[b];
-  for (int x : va)
-    for (int y : vb)
+  for (int x : topo.edgeVertices[a])
+    for (int y : topo.edgeVertices[b])
       if (x >= 0 && x == y) return true;
   return false;
+}
+
+// The sources of one face (see narrowFaceSources).
+std::vector<FaceSpacingField::Source> sourcesOfFace(const SolidTopology& topo, int f,
+                                                    const std::vector<Bnd_Box>& boxes, double floor, double cap,
+                                                    double fraction) {
+  std::vector<FaceSpacingField::Source> sources;
+  const double reach = cap / fraction;  // only edges nearer than this ask for less than the cap
+  const FaceBoundary boundary = boundaryOf(topo, f);
+  std::vector<int> edges;
+  for (int e = 0; e < topo.edgeCount(); ++e)
+    if (boundary.spots[e].wire >= 0 && !boxes[e].IsVoid()) edges.push_back(e);
+  for (int a : edges) {
+    // Partners: edges of the face sharing no vertex with a (edges meeting at
+    // a vertex are near each other there: a corner, for its ball and the
+    // edges' spacing), within the reach.
+    std::vector<Partner> partners;
+    double nearest = reach;
+    for (int b : edges) {
+      if (b == a || shareVertex(topo, a, b) || boxes[a].Distance(boxes[b]) >= reach) continue;
+      BRepExtrema_DistShapeShape distance(topo.edge(a), topo.edge(b));
+      if (!distance.IsDone() || !(distance.Value() < reach)) continue;
+      nearest = std::min(nearest, distance.Value());
+      Bnd_Box grown = boxes[b];
+      grown.Enlarge(reach);
+      partners.push_back({b, BRepAdaptor_Curve(topo.edge(b)), grown});
+    }
+    if (partners.empty()) continue;
+    const BRepAdaptor_Curve curve(topo.edge(a));
+    const double length = boundary.spots[a].length;
+    const double step = std::clamp(fraction * nearest, floor, cap);
+    for (const auto& [u, arc] : pointsNearPartners(curve, length, step, reach, partners)) {
+      const gp_Pnt p = curve.Value(u);
+      double spacing = cap;
+      for (const Partner& q : partners) {
+        if (q.near.IsOut(p)) continue;
+        // The nearest point of the partner (its ends included), and whether
+        // the boundary runs far between the two.
+        double best = p.SquareDistance(q.curve.Value(q.curve.FirstParameter()));
+        double at = q.curve.FirstParameter();
+        if (const double last = p.SquareDistance(q.curve.Value(q.curve.LastParameter())); last < best) {
+          best = last;
+          at = q.curve.LastParameter();
+        }
+        Extrema_ExtPC extrema(p, q.curve);
+        if (extrema.IsDone())
+          for (int i = 1; i <= extrema.NbExt(); ++i)
+            if (extrema.SquareDistance(i) < best) {
+              best = extrema.SquareDistance(i);
+              at = extrema.Point(i).Parameter();
+            }
+        const double d = std::sqrt(best);
+        if (boundary.way(a, arc, q.edge, arcTo(q.curve, at)) >= kPathRatio * d)
+          spacing = std::min(spacing, fraction * d);
+      }
+      if (spacing < cap) sources.push_back({p, std::clamp(spacing, floor, cap)});
+    }
+  }
+  return sources;
 }
 
 }  // namespace
@@ -59,51 +194,24 @@ std::vector<std::vector<FaceSpacingField::Source>> narrowFaceSources(const Solid
                                                                       double cap, double fraction) {
   std::vector<std::vector<FaceSpacingField::Source>> sources(topo.faceCount());
   if (!(fraction > 0) || !(cap > 0)) return sources;
-  std::vector<std::vector<int>> faceEdges(topo.faceCount());
+  // A box OCCT cannot make stays void: its edge asks for nothing.
+  std::vector<Bnd_Box> boxes(topo.edgeCount());
   for (int e = 0; e < topo.edgeCount(); ++e) {
     if (topo.edgeDegenerate[e]) continue;
-    const auto [f0, f1] = topo.edgeFaces[e];
-    if (f0 >= 0) faceEdges[f0].push_back(e);
-    if (f1 >= 0 && f1 != f0) faceEdges[f1].push_back(e);
+    try {
+      BRepBndLib::Add(topo.edge(e), boxes[e], false);
+    } catch (const Standard_Failure&) {
+      boxes[e] = Bnd_Box();
+    }
   }
-  std::vector<Bnd_Box> boxes(topo.edgeCount());
-  for (int e = 0; e < topo.edgeCount(); ++e)
-    if (!topo.edgeDegenerate[e]) BRepBndLib::Add(topo.edge(e), boxes[e], false);
-  // Only edges nearer than this ask for less than the cap.
-  const double reach = cap / fraction;
-
   for (int f = 0; f < topo.faceCount(); ++f) {
-    const std::vector<int>& edges = faceEdges[f];
-    for (std::size_t i = 0; i < edges.size(); ++i)
-      for (std::size_t j = i + 1; j < edges.size(); ++j) {
-        const int a = edges[i], b = edges[j];
-        // Edges meeting at a vertex are near each other there: that is a
-        // corner (its ball and the edges' spacing), not a narrow face.
-        if (shareVertex(topo, a, b) || boxes[a].IsVoid() || boxes[b].IsVoid() ||
-            boxes[a].Distance(boxes[b]) >= reach)
-          continue;
-        // A pair OCCT cannot measure (a broken curve in a hostile file)
-        // asks for nothing: the rest of the sampling copes with it or
-        // reports it.
-        std::vector<FaceSpacingField::Source> found;
-        try {
-          BRepExtrema_DistShapeShape nearest(topo.edge(a), topo.edge(b));
-          if (!nearest.IsDone() || !(nearest.Value() < reach)) continue;
-          const double step = std::clamp(fraction * nearest.Value(), floor, cap);
-          // Each edge's points ask for fraction × their own distance to the
-          // other edge: where the two part, the face is wide again.
-          for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
-            const BRepAdaptor_Curve source(topo.edge(from)), other(topo.edge(to));
-            for (const gp_Pnt& p : pointsAlong(source, step)) {
-              const double spacing = std::clamp(fraction * distanceToCurve(p, other), floor, cap);
-              if (spacing < cap) found.push_back({p, spacing});
-            }
-          }
-        } catch (const Standard_Failure&) {
-          continue;
-        }
-        sources[f].insert(sources[f].end(), found.begin(), found.end());
-      }
+    // A face OCCT cannot measure (a broken curve in a hostile file) asks
+    // for nothing: the rest of the sampling copes with it or reports it.
+    try {
+      sources[f] = sourcesOfFace(topo, f, boxes, floor, cap, fraction);
+    } catch (const Standard_Failure&) {
+      sources[f].clear();
+    }
   }
   return sources;
 }
