@@ -121,7 +121,7 @@ std::vector<double> sampleArcs(const std::vector<std::array<double, 2>>& profile
 // A narrow face (narrowFaceSources, `sources` here) is finer near its close
 // edges, and where such an edge is convex the face across takes that on too,
 // near where the face is narrow only (the riser of a step makes the tread
-// and the floor fine along it, and along its ends' edges only near it). A
+// fine along it, and the step's sides only near its ends). A
 // field holds one set of sources: the narrow faces' and the convex edges'.
 void gradeFacesFromConvexEdges(SamplingContext& ctx, std::vector<std::vector<FaceSpacingField::Source>> sources) {
   const SolidTopology& topo = ctx.topo;
