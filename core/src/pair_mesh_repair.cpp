@@ -249,10 +249,9 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
       changedMesh = true;
       m.counts.retriangulatedPolygons += changed;
       buildIncidence();
-      bad = countFlagged();
-      if (bad == 0) break;
     }
-    countFlagged();
+    bad = countFlagged();  // also compacts the list the candidates come from
+    if (bad == 0) break;
     std::vector<Index> candidates;
     for (std::size_t i : flagged)
       for (Index v : m.tets[i])

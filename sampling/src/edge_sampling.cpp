@@ -133,7 +133,7 @@ void gradeFacesFromConvexEdges(SamplingContext& ctx, std::vector<std::vector<Fac
     const double s = ctx.edgeSpacing[e];
     double finest = s;
     for (int f : topo.edgeFaces[e])
-      if (f >= 0 && narrow[f]) finest = std::min(finest, std::max(ctx.minSpacing, narrow[f]->finest()));
+      if (f >= 0 && narrow[f]) finest = std::min(finest, narrow[f]->finest());  // sources are >= the floor
     if (!(finest < ctx.spacing)) continue;  // nothing finer to pass on
     BRepAdaptor_Curve curve(topo.edge(e));
     // Points the finest spacing apart, as many as the edge's own samples
@@ -149,7 +149,7 @@ void gradeFacesFromConvexEdges(SamplingContext& ctx, std::vector<std::vector<Fac
       const gp_Pnt p = curve.Value(curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n);
       double spacing = s;
       for (int f : topo.edgeFaces[e])
-        if (f >= 0 && narrow[f]) spacing = std::max(ctx.minSpacing, narrow[f]->allowedNear(p, 0, spacing));
+        if (f >= 0 && narrow[f]) spacing = narrow[f]->allowedNear(p, 0, spacing);
       if (spacing < ctx.spacing) along.push_back({p, spacing});
     }
     for (int f : topo.edgeFaces[e])

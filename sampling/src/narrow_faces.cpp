@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <unordered_map>
+#include <utility>
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepBndLib.hxx>
@@ -36,27 +38,26 @@ struct WireSpot {
   bool forward = true;
 };
 
-// Per edge of the face (by edge id), its spot; per wire, its length.
+// Per edge of the face, its spot; per wire, its length.
 struct FaceBoundary {
-  std::vector<WireSpot> spots;  // indexed by edge id; wire -1 where not on the face
+  std::unordered_map<int, WireSpot> spots;  // by edge id
   std::vector<double> perimeter;
 
   // Arc position along its wire of the point `arc` from the start of edge e's curve.
-  double position(int e, double arc) const {
-    const WireSpot& s = spots[e];
-    return s.start + (s.forward ? arc : s.length - arc);
-  }
-  // The way along the boundary between two points (+inf on different wires).
+  double position(const WireSpot& s, double arc) const { return s.start + (s.forward ? arc : s.length - arc); }
+  // The way along the boundary between two points (+inf on different wires,
+  // or for an edge no wire lists).
   double way(int a, double arcA, int b, double arcB) const {
-    if (spots[a].wire != spots[b].wire) return std::numeric_limits<double>::infinity();
-    const double apart = std::abs(position(a, arcA) - position(b, arcB));
-    return std::min(apart, perimeter[spots[a].wire] - apart);
+    const auto sa = spots.find(a), sb = spots.find(b);
+    if (sa == spots.end() || sb == spots.end() || sa->second.wire != sb->second.wire)
+      return std::numeric_limits<double>::infinity();
+    const double apart = std::abs(position(sa->second, arcA) - position(sb->second, arcB));
+    return std::min(apart, perimeter[sa->second.wire] - apart);
   }
 };
 
 FaceBoundary boundaryOf(const SolidTopology& topo, int f) {
   FaceBoundary fb;
-  fb.spots.assign(topo.edgeCount(), {});
   const TopoDS_Face& face = topo.face(f);
   for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
     const int wire = static_cast<int>(fb.perimeter.size());
@@ -65,8 +66,8 @@ FaceBoundary boundaryOf(const SolidTopology& topo, int f) {
       const int e = topo.edges.FindIndex(ex.Current()) - 1;
       if (e < 0 || topo.edgeDegenerate[e]) continue;
       const double length = GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(topo.edge(e)));
-      if (fb.spots[e].wire < 0)  // a seam is met twice: its first passage stands
-        fb.spots[e] = {wire, along, length, ex.Current().Orientation() != TopAbs_REVERSED};
+      // A seam is met twice: its first passage stands.
+      fb.spots.emplace(e, WireSpot{wire, along, length, ex.Current().Orientation() != TopAbs_REVERSED});
       along += length;
     }
     fb.perimeter.push_back(along);
@@ -135,28 +136,45 @@ std::vector<FaceSpacingField::Source> sourcesOfFace(const SolidTopology& topo, i
                                                     double fraction) {
   std::vector<FaceSpacingField::Source> sources;
   const double reach = cap / fraction;  // only edges nearer than this ask for less than the cap
-  const FaceBoundary boundary = boundaryOf(topo, f);
   std::vector<int> edges;
-  for (int e = 0; e < topo.edgeCount(); ++e)
-    if (boundary.spots[e].wire >= 0 && !boxes[e].IsVoid()) edges.push_back(e);
-  for (int a : edges) {
-    // Partners: edges of the face sharing no vertex with a (edges meeting at
-    // a vertex are near each other there: a corner, for its ball and the
-    // edges' spacing), within the reach.
-    std::vector<Partner> partners;
-    double nearest = reach;
-    for (int b : edges) {
-      if (b == a || shareVertex(topo, a, b) || boxes[a].Distance(boxes[b]) >= reach) continue;
+  for (TopExp_Explorer x(topo.face(f), TopAbs_EDGE); x.More(); x.Next()) {
+    const int e = topo.edges.FindIndex(x.Current()) - 1;
+    if (e >= 0 && !topo.edgeDegenerate[e] && !boxes[e].IsVoid()) edges.push_back(e);
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  // Per edge (its index in `edges`): its partners, the face's edges sharing
+  // no vertex with it (edges meeting at a vertex are near each other there:
+  // a corner, for its ball and the edges' spacing) within the reach, with
+  // their distance; each pair measured once.
+  std::vector<std::vector<std::pair<std::size_t, double>>> close(edges.size());
+  bool any = false;
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    for (std::size_t j = i + 1; j < edges.size(); ++j) {
+      const int a = edges[i], b = edges[j];
+      if (shareVertex(topo, a, b) || boxes[a].Distance(boxes[b]) >= reach) continue;
       BRepExtrema_DistShapeShape distance(topo.edge(a), topo.edge(b));
       if (!distance.IsDone() || !(distance.Value() < reach)) continue;
-      nearest = std::min(nearest, distance.Value());
-      Bnd_Box grown = boxes[b];
-      grown.Enlarge(reach);
-      partners.push_back({b, BRepAdaptor_Curve(topo.edge(b)), grown});
+      close[i].push_back({j, distance.Value()});
+      close[j].push_back({i, distance.Value()});
+      any = true;
     }
-    if (partners.empty()) continue;
+  if (!any) return sources;  // most faces: no wire walk, no edge lengths
+  const FaceBoundary boundary = boundaryOf(topo, f);
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const auto spot = boundary.spots.find(edges[i]);
+    if (close[i].empty() || spot == boundary.spots.end()) continue;
+    const int a = edges[i];
+    std::vector<Partner> partners;
+    double nearest = reach;
+    for (const auto& [j, distance] : close[i]) {
+      nearest = std::min(nearest, distance);
+      Bnd_Box grown = boxes[edges[j]];
+      grown.Enlarge(reach);
+      partners.push_back({edges[j], BRepAdaptor_Curve(topo.edge(edges[j])), grown});
+    }
     const BRepAdaptor_Curve curve(topo.edge(a));
-    const double length = boundary.spots[a].length;
+    const double length = spot->second.length;
     const double step = std::clamp(fraction * nearest, floor, cap);
     for (const auto& [u, arc] : pointsNearPartners(curve, length, step, reach, partners)) {
       const gp_Pnt p = curve.Value(u);
