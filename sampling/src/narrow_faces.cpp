@@ -197,8 +197,9 @@ std::vector<FaceSpacingField::Source> sourcesOfFace(const SolidTopology& topo, i
               at = extrema.Point(i).Parameter();
             }
         const double d = std::sqrt(best);
-        if (boundary.way(a, arc, q.edge, arcTo(q.curve, at)) >= kPathRatio * d)
-          spacing = std::min(spacing, fraction * d);
+        // The way round (an arc length on the partner) only where it could lower the spacing.
+        if (fraction * d < spacing && boundary.way(a, arc, q.edge, arcTo(q.curve, at)) >= kPathRatio * d)
+          spacing = fraction * d;
       }
       if (spacing < cap) sources.push_back({p, std::clamp(spacing, floor, cap)});
     }
