@@ -109,7 +109,8 @@ std::pair<std::vector<std::array<Index, 3>>, Score> bestTriangulation(const std:
 }  // namespace
 
 std::size_t retriangulateFaceVertexPolygons(PairMesh& m, std::vector<std::uint8_t>* needsRepair,
-                                            std::vector<std::size_t>* flagged, PolygonSlots* known) {
+                                            std::vector<std::size_t>* flagged, PolygonSlots* known,
+                                            std::vector<std::uint64_t>* changedKeys) {
   // Only the polygons holding a bad element.
   std::vector<std::uint64_t> keys;
   auto consider = [&](std::size_t i) {
@@ -173,6 +174,7 @@ std::size_t retriangulateFaceVertexPolygons(PairMesh& m, std::vector<std::uint8_
         (*needsRepair)[i] = elementNeedsRepair(m.nodes, m.tets[i]) ? 1 : 0;
         if (flagged && (*needsRepair)[i]) flagged->push_back(i);
       }
+    if (changedKeys && needsRepair && known) changedKeys->push_back(key);
     ++changed;
   }
   return changed;

@@ -18,6 +18,7 @@
 #include "cadmedial/union_find.hpp"
 #include "pair_mesh_element_checks.hpp"
 #include "pair_mesh_facet_triangulation.hpp"
+#include "pair_mesh_incidence.hpp"
 #include "pair_mesh_node_position.hpp"
 #include "point_box.hpp"
 
@@ -62,23 +63,6 @@ double negligibleVolume(const PairMesh& m, std::size_t i) {
 
 namespace {
 
-// Node -> incident elements (CSR: incident[offsets[v] .. offsets[v + 1]]),
-// for the nodes `keep` accepts only (the others get empty ranges).
-template <typename Keep>
-void buildIncidenceOf(const PairMesh& m, Keep keep, std::vector<Index>& offsets, std::vector<Index>& incident) {
-  const std::size_t n = m.nodes.size();
-  offsets.assign(n + 1, 0);
-  for (const auto& t : m.tets)
-    for (Index v : t)
-      if (keep(v)) ++offsets[v + 1];
-  for (std::size_t v = 0; v < n; ++v) offsets[v + 1] += offsets[v];
-  incident.resize(offsets[n]);
-  std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
-  for (std::size_t i = 0; i < m.tets.size(); ++i)
-    for (Index v : m.tets[i])
-      if (keep(v)) incident[fill[v]++] = static_cast<Index>(i);
-}
-
 std::size_t countNegative(const PairMesh& m) {
   return countElements(m.tets.size(), [&](std::size_t i) { return isInverted(m, i); });
 }
@@ -115,30 +99,28 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
     return flagged.size();
   };
   auto negative = [&badFlag](std::size_t i) { return badFlag[i] != 0; };
-  // Node -> incident tetrahedra (CSR); rebuilt when polygons are re-triangulated.
-  std::vector<Index> offsets, incident;
-  // Only the Voronoi nodes': boundary nodes never move (a third fewer
-  // entries; this pass was the costliest step left on the lever).
-  auto buildIncidence = [&]() {
-    buildIncidenceOf(m, [&m](Index v) { return !m.isBoundaryNode(v); }, offsets, incident);
-  };
+  // Node -> incident tetrahedra, built once and kept through the
+  // re-triangulations. Only the Voronoi nodes': boundary nodes never move
+  // (a third fewer entries; this pass was the costliest step left on the
+  // lever).
+  NodeIncidence incidence;
+  auto voronoiNode = [&m](Index v) { return !m.isBoundaryNode(v); };
   auto negativeAround = [&](Index v, double* deficit) {
     std::size_t count = 0;
-    for (Index k = offsets[v]; k < offsets[v + 1]; ++k) {
-      if (needsRepair(m, incident[k])) {
+    incidence.forEach(m, v, [&](Index i) {
+      if (needsRepair(m, i)) {
         ++count;
-        if (deficit) *deficit -= tetVolume(m, incident[k]);
+        if (deficit) *deficit -= tetVolume(m, i);
       }
-    }
+    });
     return count;
   };
 
   auto flagAround = [&](Index v) {
-    for (Index k = offsets[v]; k < offsets[v + 1]; ++k) {
-      const Index i = incident[k];
+    incidence.forEach(m, v, [&](Index i) {
       badFlag[i] = needsRepair(m, i) ? 1 : 0;
       if (badFlag[i]) flagged.push_back(i);
-    }
+    });
   };
   // The polygons the re-triangulations met, with their element slots (no
   // element changes its slot in here).
@@ -151,15 +133,14 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
     ++stamp;
     std::size_t count = 0;
     for (Index v : set)
-      for (Index k = offsets[v]; k < offsets[v + 1]; ++k) {
-        const Index i = incident[k];
-        if (seen[i] == stamp) continue;
+      incidence.forEach(m, v, [&](Index i) {
+        if (seen[i] == stamp) return;
         seen[i] = stamp;
         if (needsRepair(m, i)) {
           ++count;
           *deficit -= tetVolume(m, i);
         }
-      }
+      });
     return count;
   };
   // Nearly cospherical samples (the symmetric triplets along a convex edge)
@@ -181,11 +162,12 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
       if (cluster.empty()) continue;
       const Vec3 seed = m.nodes[cluster[0]];
       for (std::size_t q = 0; q < cluster.size() && cluster.size() < 32; ++q)
-        for (Index k = offsets[cluster[q]]; k < offsets[cluster[q] + 1]; ++k)
-          for (Index u : m.tets[incident[k]])
+        incidence.forEach(m, cluster[q], [&](Index i) {
+          for (Index u : m.tets[i])
             if (!m.isBoundaryNode(u) && std::find(cluster.begin(), cluster.end(), u) == cluster.end() &&
                 squaredLength(m.nodes[u], seed) < 0.0025 * size * size)
               cluster.push_back(u);
+        });
       std::vector<Vec3> start;
       Vec3 centroid{0, 0, 0};
       for (Index v : cluster) {
@@ -228,27 +210,28 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
   auto bestPosition = [&](Index v) -> std::optional<Vec3> {
     std::vector<std::array<Index, 4>> elements;
     double far = 0;
-    for (Index k = offsets[v]; k < offsets[v + 1]; ++k) {
-      elements.push_back(m.tets[incident[k]]);
-      for (Index u : m.tets[incident[k]]) far = std::max(far, squaredLength(m.nodes[v], m.nodes[u]));
-    }
+    incidence.forEach(m, v, [&](Index i) {
+      elements.push_back(m.tets[i]);
+      for (Index u : m.tets[i]) far = std::max(far, squaredLength(m.nodes[v], m.nodes[u]));
+    });
     if (!(std::sqrt(far) <= 100 * extent)) return std::nullopt;
     return nearestValidNodePosition(m.nodes, v, elements, 0.5 * std::sqrt(far));
   };
 
   std::size_t bad = flagAll();
   if (bad == 0) return 0;  // before the incidence: on CTC-01 a 0.05 s pass
-  buildIncidence();
+  incidence.build(m, voronoiNode);
   for (int round = 0; round < rounds && bad > 0; ++round) {
     // A round is a function of the mesh (and of which half of the rounds it
     // is in): after a round that changed nothing, the rest of its half would
     // change nothing either.
     bool changedMesh = false;
     // Moves fold Voronoi polygons that another triangulation keeps positive.
-    if (const std::size_t changed = retriangulateFaceVertexPolygons(m, &badFlag, &flagged, &polygonSlots)) {
+    std::vector<std::uint64_t> rewritten;
+    if (const std::size_t changed = retriangulateFaceVertexPolygons(m, &badFlag, &flagged, &polygonSlots, &rewritten)) {
       changedMesh = true;
       m.counts.retriangulatedPolygons += changed;
-      buildIncidence();
+      for (std::uint64_t key : rewritten) incidence.polygonRewritten(m, polygonSlots.at(key), voronoiNode);
     }
     bad = countFlagged();  // also compacts the list the candidates come from
     if (bad == 0) break;
@@ -282,13 +265,14 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
       for (double s : kSteps)
         targets.push_back({(1 - s) * start[0] + s * centroid[0], (1 - s) * start[1] + s * centroid[1],
                            (1 - s) * start[2] + s * centroid[2]});
-      for (Index k = offsets[v]; k < offsets[v + 1]; ++k)
-        for (Index u : m.tets[incident[k]])
+      incidence.forEach(m, v, [&](Index i) {
+        for (Index u : m.tets[i])
           if (u != v && !m.isBoundaryNode(u)) {
             const Vec3& q = m.nodes[u];
             targets.push_back(q);
             targets.push_back({(start[0] + q[0]) / 2, (start[1] + q[1]) / 2, (start[2] + q[2]) / 2});
           }
+      });
       Vec3 best = start;
       std::size_t bestCount = before;
       double bestDeficit = deficit0;
@@ -376,19 +360,20 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance) {
     }
   }
   // Node -> incident elements (CSR), for the clustered nodes only.
-  std::vector<Index> offsets, incident;
-  buildIncidenceOf(m, [&inPair](Index v) { return inPair[v] != 0; }, offsets, incident);
+  NodeIncidence incidence;
+  incidence.build(m, [&inPair](Index v) { return inPair[v] != 0; });
   std::vector<std::uint32_t> seen(m.tets.size(), 0);
   std::uint32_t stamp = 0;
   auto badAroundSet = [&](const std::vector<Index>& set) {
     ++stamp;
     std::size_t count = 0;
     for (Index v : set)
-      for (Index k = offsets[v]; k < offsets[v + 1]; ++k)
-        if (seen[incident[k]] != stamp) {
-          seen[incident[k]] = stamp;
-          count += needsRepair(m, incident[k]) ? 1 : 0;
+      incidence.forEach(m, v, [&](Index i) {
+        if (seen[i] != stamp) {
+          seen[i] = stamp;
+          count += needsRepair(m, i) ? 1 : 0;
         }
+      });
     return count;
   };
   std::size_t welded = 0;

@@ -20,6 +20,7 @@
 #include "pair_mesh_builder.hpp"
 #include "pair_mesh_facet_triangulation.hpp"
 #include "pair_mesh_element_checks.hpp"
+#include "pair_mesh_incidence.hpp"
 
 using namespace cadmedial;
 using cadmedial::testing::gridBoxSamples;
@@ -161,6 +162,56 @@ std::vector<std::uint8_t> everyFiniteCell(const DelaunayVoronoi& dv) {
   std::vector<std::uint8_t> inner(dv.cellCount(), 0);
   for (Index c = 0; c < dv.cellCount(); ++c) inner[c] = dv.isInfinite(c) ? 0 : 1;
   return inner;
+}
+
+// The incidence kept through re-triangulations lists, for every node, the
+// same elements in the same order as one built afresh: the repair's choices
+// depend on that order. Each Voronoi polygon of a grid box is re-triangulated
+// as a fan from another corner, twice (the second time its slots are already
+// among those kept aside).
+TEST(PairMeshRepairSteps, IncidenceFollowsRetriangulations) {
+  const SampleSet samples = gridBoxSamples(5, 0.2);
+  const DelaunayVoronoi dv(samples.points);
+  PairMeshBuilder builder(dv, samples, nullptr);
+  PairMesh m = builder.build(everyFiniteCell(dv));
+  auto voronoiNode = [&m](Index v) { return !m.isBoundaryNode(v); };
+  // Face-Vertex element slots per polygon, in element order (a's, b's, ...).
+  std::map<std::array<Index, 2>, std::vector<std::size_t>> polygons;
+  for (std::size_t i = 0; i < m.size(); ++i)
+    if (m.type[i] == PairElementType::FaceVertex) polygons[m.medialSimplex[i]].push_back(i);
+  NodeIncidence kept;
+  kept.build(m, voronoiNode);
+  auto listsOf = [&](const NodeIncidence& incidence) {
+    std::vector<std::vector<Index>> lists(m.nodes.size());
+    for (Index v = 0; v < m.nodes.size(); ++v) incidence.forEach(m, v, [&](Index i) { lists[v].push_back(i); });
+    return lists;
+  };
+  std::size_t rewritten = 0, changedLists = 0;
+  const auto before = listsOf(kept);
+  for (int pass = 1; pass <= 2; ++pass) {
+    for (const auto& [key, slots] : polygons) {
+      // The polygon from the fan n0, n1, ..., its elements (a, n0, ni, nj).
+      const Index a = m.tets[slots[0]][0], b = m.tets[slots[1]][0];
+      std::vector<Index> polygon{m.tets[slots[0]][1], m.tets[slots[0]][2]};
+      for (std::size_t t = 0; t < slots.size(); t += 2) polygon.push_back(m.tets[slots[t]][3]);
+      const std::size_t k = polygon.size();
+      if (k < 4) continue;  // one triangulation only
+      for (std::size_t t = 0; t + 2 < k; ++t) {  // the fan from corner `pass`
+        const Index p = polygon[pass % k], q = polygon[(pass + t + 1) % k], r = polygon[(pass + t + 2) % k];
+        m.tets[slots[2 * t]] = {a, p, q, r};
+        m.tets[slots[2 * t + 1]] = {b, p, r, q};
+      }
+      kept.polygonRewritten(m, slots, voronoiNode);
+      ++rewritten;
+    }
+    NodeIncidence fresh;
+    fresh.build(m, voronoiNode);
+    const auto now = listsOf(kept);
+    EXPECT_EQ(now, listsOf(fresh)) << "after pass " << pass;
+    for (Index v = 0; v < m.nodes.size(); ++v) changedLists += now[v] != before[v] ? 1 : 0;
+  }
+  EXPECT_GT(rewritten, 10u);
+  EXPECT_GT(changedLists, 10u);  // the test re-triangulated something that shows
 }
 
 // Inner cells around every edge of the triangulation form at most one run.
