@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <unordered_map>
 
@@ -91,7 +92,7 @@ void addToScore(Score& s, const std::vector<Vec3>& nodes, const std::array<Index
 
 class EdgeSplitter {
  public:
-  explicit EdgeSplitter(PairMesh& m) : m_(m) {}
+  EdgeSplitter(PairMesh& m, const std::vector<std::size_t>* candidates) : m_(m), candidates_(candidates) {}
 
   std::size_t run() {
     collectEdges();
@@ -111,9 +112,15 @@ class EdgeSplitter {
   // nodes are ends of such an edge (a few dozen of 100 k samples), since
   // these passes over every element ran on every repair and trial.
   void collectEdges() {
-    const std::vector<std::size_t> negative = selectElements(m_.size(), [&](std::size_t i) {
+    auto negativeEdgeEdge = [&](std::size_t i) {
       return m_.type[i] == PairElementType::EdgeEdge && isInverted(m_, i);
-    });
+    };
+    std::vector<std::size_t> negative;
+    if (candidates_) {
+      std::copy_if(candidates_->begin(), candidates_->end(), std::back_inserter(negative), negativeEdgeEdge);
+    } else {
+      negative = selectElements(m_.size(), negativeEdgeEdge);
+    }
     if (negative.empty()) return;
     edgeEnd_.assign(m_.nodes.size(), 0);
     for (std::size_t i : negative) {
@@ -474,6 +481,7 @@ class EdgeSplitter {
   }
 
   PairMesh& m_;
+  const std::vector<std::size_t>* candidates_;  // optional: where the negative elements are
   std::map<std::uint64_t, std::vector<std::size_t>> edges_;  // ordered: the same splits on every run
   std::vector<std::uint8_t> edgeEnd_;  // per node: an end of one of edges_
   std::vector<BoundaryPolygon> polygons_;
@@ -490,6 +498,8 @@ class EdgeSplitter {
 
 }  // namespace
 
-std::size_t splitBoundaryEdges(PairMesh& m) { return EdgeSplitter(m).run(); }
+std::size_t splitBoundaryEdges(PairMesh& m, const std::vector<std::size_t>* candidates) {
+  return EdgeSplitter(m, candidates).run();
+}
 
 }  // namespace cadmedial

@@ -8,11 +8,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include "cadmedial/pair_mesh.hpp"
 #include "cadmedial/union_find.hpp"
@@ -359,52 +361,79 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance) {
       clusters[slot[r]].push_back(v);
     }
   }
-  // Node -> incident elements (CSR), for the clustered nodes only.
+  // Node -> incident elements, for the clustered nodes only.
   NodeIncidence incidence;
   incidence.build(m, [&inPair](Index v) { return inPair[v] != 0; });
-  std::vector<std::uint32_t> seen(m.tets.size(), 0);
-  std::uint32_t stamp = 0;
-  auto badAroundSet = [&](const std::vector<Index>& set) {
-    ++stamp;
-    std::size_t count = 0;
-    for (Index v : set)
-      incidence.forEach(m, v, [&](Index i) {
-        if (seen[i] != stamp) {
-          seen[i] = stamp;
-          count += needsRepair(m, i) ? 1 : 0;
-        }
-      });
-    return count;
-  };
-  std::size_t welded = 0;
-  for (const auto& cluster : clusters) {
+  // The clusters that may move (a cluster moves its own nodes only, so this
+  // holds until it is decided), each with its elements once.
+  std::vector<Index> active;
+  std::vector<std::size_t> elementOffsets{0};
+  std::vector<Index> elements;
+  for (Index c = 0; c < clusters.size(); ++c) {
+    const std::vector<Index>& cluster = clusters[c];
     if (cluster.size() < 2) continue;
     std::vector<Vec3> start;
     for (Index v : cluster) start.push_back(m.nodes[v]);
+    if (std::all_of(start.begin(), start.end(), [&](const Vec3& p) { return p == start[0]; })) continue;
     // A target must be within 2 × tolerance of every member, so none is
     // when the cluster spans more than 4 × tolerance along an axis. Checked
     // first: chains of close pairs can hold thousands of nodes (the apex of
     // a cone), and the member-by-member test below is quadratic.
     if (boxOf(start.data(), start.data() + start.size()).widestSide() > 4 * tolerance) continue;
-    const std::size_t before = badAroundSet(cluster);
-    bool done = false;
-    std::size_t moved = 0;
-    for (std::size_t k = 0; k < cluster.size() && !done; ++k) {  // onto each member's position in turn
+    const std::size_t first = elements.size();
+    for (Index v : cluster) incidence.forEach(m, v, [&](Index i) { elements.push_back(i); });
+    std::sort(elements.begin() + first, elements.end());
+    elements.erase(std::unique(elements.begin() + first, elements.end()), elements.end());
+    active.push_back(c);
+    elementOffsets.push_back(elements.size());
+  }
+  // Moves a cluster onto one member's position, or leaves it; returns the
+  // number of members moved. It reads the positions of its elements' nodes.
+  auto decide = [&](std::size_t a) -> std::size_t {
+    const std::vector<Index>& cluster = clusters[active[a]];
+    std::vector<Vec3> start;
+    for (Index v : cluster) start.push_back(m.nodes[v]);
+    auto bad = [&]() {
+      return std::count_if(elements.begin() + elementOffsets[a], elements.begin() + elementOffsets[a + 1],
+                           [&](Index i) { return needsRepair(m, i); });
+    };
+    const auto before = bad();
+    for (std::size_t k = 0; k < cluster.size(); ++k) {  // onto each member's position in turn
       // Chains of close pairs can span far: every member must be near the target.
       bool compact = true;
       for (const Vec3& p : start) compact = compact && squaredLength(p, start[k]) <= 4 * limit;
       if (!compact) continue;
       for (Index v : cluster) m.nodes[v] = start[k];
-      done = badAroundSet(cluster) <= before;
-      moved = 0;
-      for (const Vec3& p : start) moved += p != start[k] ? 1 : 0;
+      if (bad() <= before)
+        return static_cast<std::size_t>(
+            std::count_if(start.begin(), start.end(), [&](const Vec3& p) { return p != start[k]; }));
     }
-    if (done) {
-      welded += moved;
-    } else {
-      for (std::size_t k = 0; k < cluster.size(); ++k) m.nodes[cluster[k]] = start[k];
-    }
+    for (std::size_t k = 0; k < cluster.size(); ++k) m.nodes[cluster[k]] = start[k];
+    return 0;
+  };
+  // Decided as in one pass in order, in waves: a cluster goes in the wave
+  // after the last one holding an earlier cluster it shares an element
+  // with, so that no two of a wave share one and each sees every earlier
+  // neighbour decided; a wave's clusters are decided in parallel.
+  std::vector<int> waveOfElement(m.tets.size(), -1);
+  std::vector<std::vector<std::size_t>> waves;
+  for (std::size_t a = 0; a < active.size(); ++a) {
+    int wave = 0;
+    for (std::size_t k = elementOffsets[a]; k < elementOffsets[a + 1]; ++k)
+      wave = std::max(wave, waveOfElement[elements[k]] + 1);
+    for (std::size_t k = elementOffsets[a]; k < elementOffsets[a + 1]; ++k) waveOfElement[elements[k]] = wave;
+    if (static_cast<std::size_t>(wave) >= waves.size()) waves.resize(wave + 1);
+    waves[wave].push_back(a);
   }
+  std::size_t welded = 0;
+  for (const std::vector<std::size_t>& wave : waves)
+    welded += tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, wave.size()), std::size_t(0),
+        [&](const tbb::blocked_range<std::size_t>& r, std::size_t sum) {
+          for (std::size_t k = r.begin(); k != r.end(); ++k) sum += decide(wave[k]);
+          return sum;
+        },
+        std::plus<>());
   return welded;
 }
 
@@ -417,7 +446,10 @@ std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, const 
   std::vector<std::uint8_t> moved, needsRepairFlag;
   std::size_t needingRepair = moveVoronoiNodes(m, dv, options.rounds, moved, needsRepairFlag);
   if (needingRepair > 0) {
-    m.counts.splitEdges = splitBoundaryEdges(m);  // none kept: the mesh and its flags as they were
+    std::vector<std::size_t> flagged;  // the negative elements are among them
+    for (std::size_t i = 0; i < m.tets.size(); ++i)
+      if (needsRepairFlag[i]) flagged.push_back(i);
+    m.counts.splitEdges = splitBoundaryEdges(m, &flagged);  // none kept: the mesh and its flags as they were
     if (m.counts.splitEdges > 0) needingRepair = moveVoronoiNodes(m, dv, options.rounds, moved, needsRepairFlag);
   }
   // Inverted elements are among those flagged as needing repair: only they are tested.
