@@ -101,12 +101,38 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
     return flagged.size();
   };
   auto negative = [&badFlag](std::size_t i) { return badFlag[i] != 0; };
-  // Node -> incident tetrahedra, built once and kept through the
-  // re-triangulations. Only the Voronoi nodes': boundary nodes never move
-  // (a third fewer entries; this pass was the costliest step left on the
-  // lever).
+  // Node -> incident tetrahedra, kept through the re-triangulations. Only
+  // Voronoi nodes move, and only near the flagged elements (a few hundred
+  // of 10^5-10^6; a relabelling trial's repair often starts from one or
+  // two), so it is built for the Voronoi nodes within two rings of those,
+  // and built again around them and the node asked for when a node outside
+  // is asked for. A node's list is the same as in an incidence of all nodes,
+  // so are the repair's choices. (The whole incidence was the costliest
+  // step of the lever's trials: 11 ms a build.)
   NodeIncidence incidence;
   auto voronoiNode = [&m](Index v) { return !m.isBoundaryNode(v); };
+  std::vector<std::uint8_t> inRegion;
+  auto inRegionNode = [&inRegion](Index v) { return inRegion[v] != 0; };
+  auto buildIncidenceAround = [&](const std::vector<Index>& alsoNodes) {
+    inRegion.assign(m.nodes.size(), 0);
+    for (std::size_t i : flagged)
+      for (Index v : m.tets[i])
+        if (voronoiNode(v)) inRegion[v] = 1;
+    for (Index v : alsoNodes) inRegion[v] = 1;
+    for (int ring = 0; ring < 2; ++ring) {
+      std::vector<std::uint8_t> grown = inRegion;
+      for (const auto& t : m.tets)
+        if (inRegion[t[0]] || inRegion[t[1]] || inRegion[t[2]] || inRegion[t[3]])
+          for (Index v : t)
+            if (voronoiNode(v)) grown[v] = 1;
+      inRegion.swap(grown);
+    }
+    incidence.build(m, inRegionNode);
+  };
+  // Before asking for the elements of these nodes.
+  auto ensureIncidence = [&](const std::vector<Index>& nodes) {
+    if (!std::all_of(nodes.begin(), nodes.end(), inRegionNode)) buildIncidenceAround(nodes);
+  };
   auto negativeAround = [&](Index v, double* deficit) {
     std::size_t count = 0;
     incidence.forEach(m, v, [&](Index i) {
@@ -163,13 +189,16 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
           cluster.push_back(v);
       if (cluster.empty()) continue;
       const Vec3 seed = m.nodes[cluster[0]];
-      for (std::size_t q = 0; q < cluster.size() && cluster.size() < 32; ++q)
+      for (std::size_t q = 0; q < cluster.size() && cluster.size() < 32; ++q) {
+        ensureIncidence({cluster[q]});
         incidence.forEach(m, cluster[q], [&](Index i) {
           for (Index u : m.tets[i])
             if (!m.isBoundaryNode(u) && std::find(cluster.begin(), cluster.end(), u) == cluster.end() &&
                 squaredLength(m.nodes[u], seed) < 0.0025 * size * size)
               cluster.push_back(u);
         });
+      }
+      ensureIncidence(cluster);
       std::vector<Vec3> start;
       Vec3 centroid{0, 0, 0};
       for (Index v : cluster) {
@@ -222,7 +251,7 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
 
   std::size_t bad = flagAll();
   if (bad == 0) return 0;  // before the incidence: on CTC-01 a 0.05 s pass
-  incidence.build(m, voronoiNode);
+  buildIncidenceAround({});
   for (int round = 0; round < rounds && bad > 0; ++round) {
     // A round is a function of the mesh (and of which half of the rounds it
     // is in): after a round that changed nothing, the rest of its half would
@@ -233,7 +262,7 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
     if (const std::size_t changed = retriangulateFaceVertexPolygons(m, &badFlag, &flagged, &polygonSlots, &rewritten)) {
       changedMesh = true;
       m.counts.retriangulatedPolygons += changed;
-      for (std::uint64_t key : rewritten) incidence.polygonRewritten(m, polygonSlots.at(key), voronoiNode);
+      for (std::uint64_t key : rewritten) incidence.polygonRewritten(m, polygonSlots.at(key), inRegionNode);
     }
     bad = countFlagged();  // also compacts the list the candidates come from
     if (bad == 0) break;
@@ -243,6 +272,7 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
         if (!m.isBoundaryNode(v)) candidates.push_back(v);
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    ensureIncidence(candidates);
     for (Index v : candidates) {
       double deficit0 = 0;
       const std::size_t before = negativeAround(v, &deficit0);
