@@ -32,12 +32,12 @@ namespace cadmedial {
 //    while the mesh keeps its elements in their slots (node moves and
 //    re-triangulations do; splits and relabellings do not). Only polygons
 //    not in it cost a pass over the elements (on CTC-01 14 ms a call);
-//  * changed (with known): gets the keys in `known` of the polygons
+//  * changedKeys (with known): gets the keys in `known` of the polygons
 //    re-triangulated, for the caller to update what it keeps per element.
 using PolygonSlots = std::unordered_map<std::uint64_t, std::vector<std::size_t>>;
 std::size_t retriangulateFaceVertexPolygons(PairMesh& mesh, std::vector<std::uint8_t>* needsRepair = nullptr,
                                             std::vector<std::size_t>* flagged = nullptr,
                                             PolygonSlots* known = nullptr,
-                                            std::vector<std::uint64_t>* changed = nullptr);
+                                            std::vector<std::uint64_t>* changedKeys = nullptr);
 
 }  // namespace cadmedial

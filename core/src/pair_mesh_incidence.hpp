@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <stdexcept>
 #include <unordered_map>
 #include <vector>
 
@@ -14,40 +15,45 @@ namespace cadmedial {
 
 class NodeIncidence {
  public:
-  // From every element, for the nodes `keep` accepts only (the others have
-  // none).
+  // From every element, for the nodes `keep` accepts only (asking for
+  // another node is an error: its list would be silently empty).
   template <typename Keep>
   void build(const PairMesh& m, Keep keep) {
     const std::size_t n = m.nodes.size();
+    kept_.assign(n, 0);
+    for (Index v = 0; v < n; ++v) kept_[v] = keep(v) ? 1 : 0;
+    elements_ = m.tets.size();
     offsets_.assign(n + 1, 0);
     for (const auto& t : m.tets)
       for (Index v : t)
-        if (keep(v)) ++offsets_[v + 1];
+        if (kept_[v]) ++offsets_[v + 1];
     for (std::size_t v = 0; v < n; ++v) offsets_[v + 1] += offsets_[v];
     incident_.resize(offsets_[n]);
     std::vector<Index> fill(offsets_.begin(), offsets_.end() - 1);
     for (std::size_t i = 0; i < m.tets.size(); ++i)
       for (Index v : m.tets[i])
-        if (keep(v)) incident_[fill[v]++] = static_cast<Index>(i);
+        if (kept_[v]) incident_[fill[v]++] = static_cast<Index>(i);
     rewritten_.clear();
     extra_.clear();
   }
 
-  // After the polygon with these element slots was re-triangulated (its
-  // elements keep their slots and, all together, its nodes; which element
-  // holds which node changes). The first time, its slots leave the lists
-  // built and every node of the polygon gets all of them, each visit then
-  // keeping those that hold the node.
-  template <typename Keep>
-  void polygonRewritten(const PairMesh& m, const std::vector<std::size_t>& slots, Keep keep) {
+  // After the polygon with these element slots was re-triangulated. What
+  // makes this work: a polygon always has the same slots, and any
+  // triangulation of it uses all of its corners, so the set of nodes its
+  // elements hold never changes; only which element holds which does. The
+  // first time, its slots leave the lists built and every node of the
+  // polygon gets all of them; a visit keeps those that hold the node.
+  void polygonRewritten(const PairMesh& m, const std::vector<std::size_t>& slots) {
     if (slots.empty()) return;
-    if (rewritten_.size() != m.tets.size()) rewritten_.assign(m.tets.size(), 0);
+    if (m.tets.size() != elements_)
+      throw std::logic_error("pair-mesh: the incidence was built for another element count");
+    if (rewritten_.empty()) rewritten_.assign(m.tets.size(), 0);
     if (rewritten_[slots[0]]) return;  // its nodes already list all its slots
     std::vector<Index> nodes;
     for (std::size_t i : slots) {
       rewritten_[i] = 1;
       for (Index v : m.tets[i])
-        if (keep(v)) nodes.push_back(v);
+        if (kept_[v]) nodes.push_back(v);
     }
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
@@ -63,6 +69,7 @@ class NodeIncidence {
   // lists were kept).
   template <typename F>
   void forEach(const PairMesh& m, Index v, F&& f) const {
+    if (v >= kept_.size() || !kept_[v]) throw std::logic_error("pair-mesh: incidence asked for a node not built for");
     Index k = offsets_[v];
     const Index end = offsets_[v + 1];
     if (rewritten_.empty()) {
@@ -86,6 +93,8 @@ class NodeIncidence {
   }
 
  private:
+  std::vector<std::uint8_t> kept_;  // per node: has a list
+  std::size_t elements_ = 0;         // the element count it was built for
   std::vector<Index> offsets_, incident_;
   // Per element: its polygon was re-triangulated (empty while none was).
   std::vector<std::uint8_t> rewritten_;

@@ -262,7 +262,7 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
     if (const std::size_t changed = retriangulateFaceVertexPolygons(m, &badFlag, &flagged, &polygonSlots, &rewritten)) {
       changedMesh = true;
       m.counts.retriangulatedPolygons += changed;
-      for (std::uint64_t key : rewritten) incidence.polygonRewritten(m, polygonSlots.at(key), inRegionNode);
+      for (std::uint64_t key : rewritten) incidence.polygonRewritten(m, polygonSlots.at(key));
     }
     bad = countFlagged();  // also compacts the list the candidates come from
     if (bad == 0) break;

@@ -138,9 +138,9 @@ std::size_t repairFlippedElements(PairMesh& mesh, const DelaunayVoronoi& dv, con
 // triangles on ab become polygons, re-triangulated (every triangulation of
 // the polygon is tried) into Vertex-Face elements on the same Voronoi node.
 // A split is kept only when it leaves fewer negative elements. Returns the
-// number of edges split. candidates (optional): elements, in increasing
-// order, among which are all the negative ones (the repair's flagged
-// elements), so that the search need not test every element.
+// number of edges split. candidates (optional): elements among which are
+// all the negative ones (the repair's flagged elements), so that the search
+// need not test every element.
 std::size_t splitBoundaryEdges(PairMesh& mesh, const std::vector<std::size_t>* candidates = nullptr);
 
 // Signed volume of tetrahedron i (positive = valid orientation).
