@@ -107,8 +107,9 @@ class EdgeSplitter {
 
  private:
   // Boundary edges {a, b} (a < b) with a negative Edge-Edge element, and all
-  // the Edge-Edge elements of those edges. The search for negative ones is
-  // parallel; the passes after it look up an element's edges only when its
+  // the Edge-Edge elements of those edges. The negative ones are looked for
+  // among the candidates when given (the repair's flagged elements), else
+  // in parallel over all; the passes after it look up an element's edges only when its
   // nodes are ends of such an edge (a few dozen of 100 k samples), since
   // these passes over every element ran on every repair and trial.
   void collectEdges() {
