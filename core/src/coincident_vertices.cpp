@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "cadmedial/edge_table.hpp"
@@ -188,25 +189,35 @@ std::size_t weldCoincidentVertices(MedialComplex& mc, double tolerance, std::siz
   if (facetsDropped) *facetsDropped = 0;
   const std::size_t nv = mc.vertices.size();
   if (!(tolerance > 0) || nv == 0) return 0;
-  // Voronoi vertices only (samples are distinct points). Sorted by x, a
-  // vertex's partners within the tolerance follow it within tolerance in x
-  // (almost never another vertex at this tolerance); a partner joins the
-  // smallest index of its cluster.
-  std::vector<Index> byX;
-  byX.reserve(nv);
-  for (Index v = 0; v < nv; ++v)
-    if (mc.vertexCell[v] != kNoIndex) byX.push_back(v);
-  std::sort(byX.begin(), byX.end(), [&](Index a, Index b) {
-    return mc.vertices[a][0] < mc.vertices[b][0] || (mc.vertices[a][0] == mc.vertices[b][0] && a < b);
-  });
+  // Voronoi vertices only (samples are distinct points), sorted by their
+  // projection on a fixed direction u: a vertex's partners within the
+  // tolerance follow it within the tolerance in that order, since
+  // |u.(p - q)| <= |p - q|. u is skew to the axes and their diagonals: CAD
+  // parts line their Voronoi vertices up along axes (a cylinder's along its
+  // axis, all with one x), and sorted by x that run was one window: 27.5 M
+  // pair tests and a third of the complex stage at 119 k vertices. The pairs
+  // found, and so the clusters, do not depend on u.
+  constexpr double ux = 0.8017837257372732, uy = 0.5345224838248488, uz = 0.2672612419124244;  // (3, 2, 1) / sqrt(14)
+  std::vector<double> along(nv, 0.0);
+  std::vector<Index> order;
+  order.reserve(nv);
+  for (Index v = 0; v < nv; ++v) {
+    if (mc.vertexCell[v] == kNoIndex) continue;
+    const Vec3& p = mc.vertices[v];
+    along[v] = ux * p[0] + uy * p[1] + uz * p[2];
+    order.push_back(v);
+  }
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) { return along[a] < along[b] || (along[a] == along[b] && a < b); });
   UnionFind clusters(nv);
   const double limit = tolerance * tolerance;
-  for (std::size_t i = 0; i < byX.size(); ++i) {
-    const Vec3& p = mc.vertices[byX[i]];
-    for (std::size_t j = i + 1; j < byX.size() && mc.vertices[byX[j]][0] - p[0] <= tolerance; ++j) {
-      const Vec3& q = mc.vertices[byX[j]];
+  constexpr double kRounding = 16 * std::numeric_limits<double>::epsilon();  // of a projection, relative to |p|_1
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const Vec3& p = mc.vertices[order[i]];
+    const double window = tolerance + kRounding * (std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]) + 4 * tolerance);
+    for (std::size_t j = i + 1; j < order.size() && along[order[j]] - along[order[i]] <= window; ++j) {
+      const Vec3& q = mc.vertices[order[j]];
       const double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
-      if (dx * dx + dy * dy + dz * dz <= limit) clusters.unite(byX[i], byX[j]);
+      if (dx * dx + dy * dy + dz * dz <= limit) clusters.unite(order[i], order[j]);
     }
   }
   std::vector<Index> into(nv, kNoIndex);  // per root, then per vertex: the smallest index of its cluster

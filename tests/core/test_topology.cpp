@@ -1,5 +1,6 @@
 // Sheets and Betti numbers on hand-built complexes, and the performance budget.
 #include <algorithm>
+#include <cmath>
 
 #include <gtest/gtest.h>
 
@@ -240,3 +241,50 @@ TEST(Topology, CoincidentVoronoiVerticesAreWeldedIntoOne) {
   EXPECT_EQ(weldCoincidentVertices(pinch, 1e-9), 0u);
   EXPECT_EQ(topologyOf(pinch).beta1, 0);
 }
+
+TEST(Topology, CoincidentVerticesAreFoundWhateverLineTheyLieOn) {
+  // The weld's sweep sorts the vertices along one direction: a run of
+  // vertices on one line across it (a cylinder's axis) must still find
+  // every close pair, and only those. Copies of the welding strip above
+  // (five polygons' worth each), laid out along each axis and along the
+  // sweep's own direction, with the held-twice point split by 0.9 of the
+  // tolerance in each axis' direction; one more copy split by 1.1 of it
+  // stays apart.
+  const double tolerance = 1e-9;
+  const Vec3 sweep{3 / std::sqrt(14.0), 2 / std::sqrt(14.0), 1 / std::sqrt(14.0)};
+  const std::vector<Vec3> lines{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, sweep};
+  MedialComplex mc;
+  std::size_t copies = 0;
+  auto addStrip = [&](const Vec3& along, double at, const Vec3& split, double gap) {
+    const Index base = static_cast<Index>(mc.vertices.size());
+    auto point = [&](double offset, double dx, double dy) {
+      // On the line (offset along it), moved off it by dx, dy in a plane
+      // that the strip's shape does not depend on.
+      return Vec3{along[0] * (at + offset) + dx, along[1] * (at + offset) + dy, along[2] * (at + offset)};
+    };
+    const Vec3 held = point(0.5, 0, 0);
+    const Vec3 corners[6] = {point(0, 0, 0), point(0.2, 0.3, 0.1), held,
+                             {held[0] + gap * split[0], held[1] + gap * split[1], held[2] + gap * split[2]},
+                             point(0.9, 0.4, 0.2), point(0.3, -0.3, 0.4)};
+    for (const Vec3& c : corners) {
+      mc.vertices.push_back(c);
+      mc.radius.push_back(1);
+      mc.vertexCell.push_back(Index(mc.vertexCell.size()));
+      mc.vertexSample.push_back(kNoIndex);
+    }
+    for (const std::vector<Index>& p : {std::vector<Index>{0, 1, 2}, {0, 3, 4}, {2, 1, 5, 3}}) {
+      for (Index v : p) mc.polygonVertices.push_back(base + v);
+      mc.polygonOffsets.push_back(Index(mc.polygonVertices.size()));
+      mc.provenance.push_back(PolygonProvenance::DelaunayEdgeFacet);
+      mc.provenanceSamples.push_back({0, 1});
+    }
+    ++copies;
+  };
+  for (std::size_t l = 0; l < lines.size(); ++l)  // apart: each line's copies start elsewhere
+    for (int k = 0; k < 50; ++k) addStrip(lines[l], 1000.0 * (l + 1) + 2.0 * k, lines[l], 0.9 * tolerance);
+  addStrip(sweep, 200.0, sweep, 1.1 * tolerance);
+  EXPECT_EQ(topologyOf(mc).beta1, static_cast<int>(copies));
+  EXPECT_EQ(weldCoincidentVertices(mc, tolerance), copies - 1);
+  EXPECT_EQ(topologyOf(mc).beta1, 1);
+}
+
