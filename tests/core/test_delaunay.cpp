@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include "cadmedial/delaunay.hpp"
 #include "cadmedial/facet_selection.hpp"
@@ -100,6 +104,45 @@ TEST(Delaunay, NearlyFlatSliverKeepsItsTrueCircumcenter) {
   const Vec3& c = dv.circumcenter(cell);
   EXPECT_GT(dv.circumradius(cell), 1e6) << "a sliver's circumsphere is huge";
   for (const Vec3& p : points) EXPECT_NEAR(distance(c, p), dv.circumradius(cell), 1e-6 * dv.circumradius(cell));
+}
+
+// Slivers whose centres are too near for "far" (within 10^6 edges) get
+// circumcenters from exact products (Mpzf) and two roundings: they must
+// agree with the exactly computed (rational) circumcenter to a few ulps of
+// its offset from the first corner. A fourth point 2e-6..1e-5 off the
+// others' circle (not cocircular) and 2e-11..1e-10 off its plane puts the
+// centre ~10^4..10^5 away.
+TEST(Delaunay, SliverCircumcentersMatchExactRationals) {
+  using Exact = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const double pi = std::acos(-1.0);
+  int checked = 0;
+  for (int trial = 0; trial < 100; ++trial) {
+    std::vector<Vec3> points;
+    const Vec3 o{unit(random) * 10, unit(random) * 10, unit(random) * 10};
+    for (int k = 0; k < 4; ++k) {
+      const double angle = 2 * pi * (k + 0.8 * unit(random)) / 4;
+      const double radius = k == 3 ? 1 + 2e-6 + 8e-6 * unit(random) : 1;  // off the circle: not cocircular
+      const double lift = k == 3 ? 2e-11 + 8e-11 * unit(random) : 0;
+      points.push_back({o[0] + radius * std::cos(angle), o[1] + radius * std::sin(angle), o[2] + lift});
+    }
+    DelaunayVoronoi dv(points);
+    if (dv.dimension() != 3) continue;
+    const Index cell = onlyFiniteCell(dv);
+    ASSERT_NE(cell, kNoIndex);
+    const auto c = dv.cell(cell);
+    const auto toExact = [](const DelaunayVoronoi::Point& p) { return Exact::Point_3(p.x(), p.y(), p.z()); };
+    const auto a = c->vertex(0)->point();
+    const Exact::Point_3 exact = CGAL::circumcenter(toExact(a), toExact(c->vertex(1)->point()),
+                                                    toExact(c->vertex(2)->point()), toExact(c->vertex(3)->point()));
+    const Vec3 want{CGAL::to_double(exact.x()), CGAL::to_double(exact.y()), CGAL::to_double(exact.z())};
+    const double offset = distance(want, {a.x(), a.y(), a.z()});
+    if (!(offset > 100 && offset < 1e6)) continue;  // the double or the "far" branch: not this one's case
+    ++checked;
+    EXPECT_LT(distance(dv.circumcenter(cell), want), 1e-14 * offset) << "trial " << trial;
+  }
+  EXPECT_GT(checked, 50) << "the slivers should mostly take the exact branch";
 }
 
 // Four cocircular points lifted off their plane by rounding: the Voronoi
