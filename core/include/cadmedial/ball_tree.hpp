@@ -33,10 +33,15 @@ class BallTree {
   double minGap(const Vec3& p, double stopAt, double skipWithin = -1) const {
     double best = std::numeric_limits<double>::infinity();
     if (nodes_.empty()) return best;
-    std::vector<std::pair<double, std::uint32_t>> stack{{bound(nodes_[0], p), 0}};
-    while (!stack.empty()) {
-      const auto [lb, i] = stack.back();
-      stack.pop_back();
+    // Depth-first with the nearer child on top: the stack holds at most one
+    // entry per level plus one (each pop pushes two), and the median split
+    // keeps the tree ~log2(n / 8) deep, so a fixed array does (a growing
+    // vector cost several allocations per query).
+    std::pair<double, std::uint32_t> stack[kMaxDepth + 2];
+    std::size_t size = 0;
+    stack[size++] = {bound(nodes_[0], p), 0};
+    while (size > 0) {
+      const auto [lb, i] = stack[--size];
       if (lb >= best) continue;
       const Node& node = nodes_[i];
       if (node.left < 0) {
@@ -51,17 +56,19 @@ class BallTree {
       const double l = bound(nodes_[node.left], p), r = bound(nodes_[node.right], p);
       // Push the farther child first so the nearer one is searched first.
       if (l < r) {
-        stack.emplace_back(r, node.right);
-        stack.emplace_back(l, node.left);
+        stack[size++] = {r, static_cast<std::uint32_t>(node.right)};
+        stack[size++] = {l, static_cast<std::uint32_t>(node.left)};
       } else {
-        stack.emplace_back(l, node.left);
-        stack.emplace_back(r, node.right);
+        stack[size++] = {l, static_cast<std::uint32_t>(node.left)};
+        stack[size++] = {r, static_cast<std::uint32_t>(node.right)};
       }
     }
     return best;
   }
 
  private:
+  // Levels: halving from 2^32 balls to leaves of <= 8 takes 30.
+  static constexpr std::size_t kMaxDepth = 32;
   struct Node {
     Vec3 lo, hi;
     double maxRadius = 0;
