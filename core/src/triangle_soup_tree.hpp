@@ -3,6 +3,7 @@
 // ray parity).
 #pragma once
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -39,6 +40,8 @@ struct SoupTree {
   int up = 2;  // the input axis that becomes z
   Triangles triangles;
   Tree tree;  // holds iterators into `triangles`: never copy or move a SoupTree
+  std::vector<std::array<Index, 3>> corners;  // per triangle, its samples
+  std::vector<Index> firstTriangle, sampleTriangles;  // per sample (CSR): the triangles at it
 
   explicit SoupTree(const SampleSet& samples) {
     for (int k = 0; k < 3; ++k)
@@ -49,6 +52,26 @@ struct SoupTree {
                              permuted(samples.points[t[2]]));
     tree.insert(triangles.begin(), triangles.end());
     tree.build();
+    corners = samples.triangles;
+    firstTriangle.assign(samples.size() + 1, 0);
+    for (const auto& t : corners)
+      for (Index v : t) ++firstTriangle[v + 1];
+    for (std::size_t v = 0; v < samples.size(); ++v) firstTriangle[v + 1] += firstTriangle[v];
+    sampleTriangles.resize(firstTriangle.back());
+    std::vector<Index> fill(firstTriangle.begin(), firstTriangle.end() - 1);
+    for (Index t = 0; t < corners.size(); ++t)
+      for (Index v : corners[t]) sampleTriangles[fill[v]++] = t;
+  }
+
+  // The triangle with exactly these three samples as corners, or kNoIndex.
+  Index triangleWith(Index a, Index b, Index c) const {
+    if (a + 1 >= firstTriangle.size()) return kNoIndex;
+    for (Index k = firstTriangle[a]; k < firstTriangle[a + 1]; ++k) {
+      const auto& t = corners[sampleTriangles[k]];
+      const bool hasB = t[0] == b || t[1] == b || t[2] == b, hasC = t[0] == c || t[1] == c || t[2] == c;
+      if (hasB && hasC && b != c) return sampleTriangles[k];
+    }
+    return kNoIndex;
   }
   SoupTree(const SoupTree&) = delete;
   SoupTree& operator=(const SoupTree&) = delete;

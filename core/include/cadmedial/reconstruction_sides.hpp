@@ -13,7 +13,8 @@
 // Side: exact on the mesh, but with one ray parity test per group of cells
 // instead of one per cell. Two cells whose circumcenters are joined by a
 // segment that touches no reconstruction triangle (CGAL AABB tree, exact
-// predicates) are on the same side; the groups are the connected components
+// predicates, or farther from the samples than any triangle there reaches)
+// are on the same side; the groups are the connected components
 // of those links over the Delaunay adjacency. A group holding a centre
 // outside the mesh's bounding box is outside; the others get one ray cast.
 #pragma once
@@ -36,7 +37,9 @@ enum ReconstructionSide : std::uint8_t {
 struct ReconstructionSides {
   std::vector<std::uint8_t> side;  // per cell id, a ReconstructionSide
   std::size_t nearCells = 0;
-  std::size_t segmentTests = 0;  // circumcenter-to-circumcenter segments tested against the mesh
+  // Circumcenter-to-circumcenter segments tested against a triangle or the
+  // tree (not those the triangles' reach clears, reconstruction_sides.cpp).
+  std::size_t segmentTests = 0;
   std::size_t rayCasts = 0;      // one per group without a centre outside the mesh's box
   std::size_t groups = 0;
   // Seconds: tree and near test, segment links, ray casts and answers.

@@ -1,0 +1,140 @@
+// The side of the closed reconstruction per Voronoi vertex, checked against
+// the exact solid (planar-faced solids: their reconstruction is their
+// boundary), and the bound that lets most Voronoi edges skip the AABB tree.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "cadmedial/delaunay.hpp"
+#include "cadmedial/reconstruction_sides.hpp"
+#include "synthetic_samples.hpp"
+#include "triangle_reach_grid.hpp"
+
+using namespace cadmedial;
+using namespace cadmedial::testing;
+
+namespace {
+
+double distance(const soup::Kernel::Point_3& a, const soup::Kernel::Point_3& b) {
+  return std::sqrt(CGAL::squared_distance(a, b));
+}
+
+// Every cell's side against the solid's exact inside test, and how many
+// Voronoi edges went to the tree (segmentTests) out of all tested.
+void expectSidesMatchTheSolid(const PlanarSolid& solid, double spacing) {
+  SamplingOptions options;
+  options.spacing = spacing;
+  const SampleSet samples = samplePlanarSolid(solid, options);
+  const DelaunayVoronoi dv(samples.points);
+  ASSERT_EQ(dv.dimension(), 3);
+  const ReconstructionSides sides =
+      reconstructionSides(dv, samples, std::vector<double>(samples.triangles.size(), 0.0));
+  std::size_t checked = 0, inside = 0, finiteFacets = 0;
+  for (Index c = 0; c < dv.cellCount(); ++c) {
+    if (dv.isInfinite(c)) continue;
+    for (int i = 0; i < 4; ++i) finiteFacets += dv.isInfinite(DelaunayVoronoi::cellId(dv.cell(c)->neighbor(i))) ? 0 : 1;
+    const Vec3& p = dv.circumcenter(c);
+    const bool in = solid.inside(p);
+    if (in && !(solid.boundaryDistance(p) > 1e-9)) continue;  // on a face: either answer
+    ASSERT_TRUE(sides.side[c] == kReconstructionInside || sides.side[c] == kReconstructionOutside)
+        << "cell " << c << " side " << int(sides.side[c]);
+    EXPECT_EQ(sides.side[c] == kReconstructionInside, in) << solid.name << " cell " << c << " at " << p[0] << ", "
+                                                          << p[1] << ", " << p[2];
+    ++checked;
+    inside += in ? 1 : 0;
+  }
+  EXPECT_GT(inside, 100u);
+  EXPECT_GT(checked - inside, 100u);
+  // The reach bound clears most segments: far fewer go to the tree than
+  // there are Voronoi edges (each finite facet is counted from both cells).
+  EXPECT_LT(sides.segmentTests, finiteFacets / 2 / 3) << "tree queries " << sides.segmentTests;
+}
+
+}  // namespace
+
+// With a band: "near" exactly where some triangle is within the band
+// (brute force over all triangles, for every 11th cell), and the others on
+// the solid's side. The reach bound spares most near queries; a wrong bound
+// would call near cells far.
+TEST(ReconstructionSides, NearCellsAreThoseWithinTheBandOfATriangle) {
+  SamplingOptions options;
+  options.spacing = 0.05;
+  const PlanarSolid solid = makeLPrism();
+  const SampleSet samples = samplePlanarSolid(solid, options);
+  const DelaunayVoronoi dv(samples.points);
+  const double band = 0.3 * options.spacing;
+  const ReconstructionSides sides =
+      reconstructionSides(dv, samples, std::vector<double>(samples.triangles.size(), band));
+  std::size_t near = 0, far = 0;
+  for (Index c = 0; c < dv.cellCount(); c += 11) {
+    if (dv.isInfinite(c) || sides.side[c] == kReconstructionSkipped) continue;
+    const Vec3& x = dv.circumcenter(c);
+    const soup::Kernel::Point_3 p(x[0], x[1], x[2]);
+    double closest = std::numeric_limits<double>::infinity();
+    for (const auto& t : samples.triangles) {
+      const auto& a = samples.points[t[0]], &b = samples.points[t[1]], &d = samples.points[t[2]];
+      closest = std::min(closest, CGAL::squared_distance(p, soup::Kernel::Triangle_3({a[0], a[1], a[2]}, {b[0], b[1], b[2]},
+                                                                                      {d[0], d[1], d[2]})));
+    }
+    closest = std::sqrt(closest);
+    if (std::abs(closest - band) < 1e-9) continue;  // on the band's edge: either answer
+    const bool outsideBox = x[0] < samples.bboxMin[0] - band || x[0] > samples.bboxMax[0] + band ||
+                            x[1] < samples.bboxMin[1] - band || x[1] > samples.bboxMax[1] + band ||
+                            x[2] < samples.bboxMin[2] - band || x[2] > samples.bboxMax[2] + band;
+    if (outsideBox) continue;  // never asked: outside the box grown by the band
+    EXPECT_EQ(sides.side[c] == kReconstructionNear, closest < band) << "cell " << c << " at distance " << closest;
+    if (closest < band) {
+      ++near;
+    } else {
+      ++far;
+      EXPECT_EQ(sides.side[c] == kReconstructionInside, solid.inside(x)) << "cell " << c;
+    }
+  }
+  EXPECT_GT(near, 100u);
+  EXPECT_GT(far, 100u);
+}
+
+TEST(ReconstructionSides, EveryVoronoiVertexOnTheSolidsSide) {
+  expectSidesMatchTheSolid(makeLPrism(), 0.05);
+  expectSidesMatchTheSolid(makeBoxWithSquareHole(), 0.06);
+}
+
+// reach(t) bounds the distance from any point of t to t's nearest corner:
+// random points of acute, right, obtuse and needle triangles, and the
+// bound is not loose by more than a factor 3 (it would still be sound, but
+// clear fewer segments).
+TEST(ReconstructionSides, TriangleReachBoundsTheDistanceToTheNearestCorner) {
+  using P = soup::Kernel::Point_3;
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const std::vector<soup::Kernel::Triangle_3> shapes{
+      {P(0, 0, 0), P(1, 0, 0), P(0.5, 0.8, 0)},       // acute
+      {P(0, 0, 0), P(1, 0, 0), P(0, 1, 0)},           // right
+      {P(0, 0, 0), P(1, 0, 0), P(0.5, 0.1, 0.05)},    // obtuse
+      {P(0, 0, 0), P(1, 0, 0), P(0.999, 0.001, 0)},   // needle
+      {P(0, 0, 0), P(1e-3, 2, 0), P(-1e-3, 4, 1e-3)}, // nearly a segment
+  };
+  for (std::size_t s = 0; s < shapes.size(); ++s) {
+    const auto& t = shapes[s];
+    const double reach = soup::TriangleReachGrid::reach(t);
+    double worst = 0;
+    for (int k = 0; k < 20000; ++k) {
+      double u = unit(random), v = unit(random);
+      if (u + v > 1) u = 1 - u, v = 1 - v;
+      const P q(t[0].x() + u * (t[1].x() - t[0].x()) + v * (t[2].x() - t[0].x()),
+                t[0].y() + u * (t[1].y() - t[0].y()) + v * (t[2].y() - t[0].y()),
+                t[0].z() + u * (t[1].z() - t[0].z()) + v * (t[2].z() - t[0].z()));
+      worst = std::max(worst, std::min({distance(q, t[0]), distance(q, t[1]), distance(q, t[2])}));
+    }
+    EXPECT_LE(worst, reach * (1 + 1e-12)) << "shape " << s;
+    EXPECT_GT(worst, reach / 3) << "shape " << s;
+  }
+  // The grid: a box that meets no triangle's cells reaches 0; one over a
+  // triangle reaches at least that triangle's reach.
+  const soup::Triangles triangles{shapes[0], {P(10, 10, 10), P(11, 10, 10), P(10, 11, 10)}};
+  const soup::TriangleReachGrid grid(triangles);
+  EXPECT_GE(grid.reachWithin(CGAL::Bbox_3(0.4, 0.1, -0.1, 0.6, 0.2, 0.1)), soup::TriangleReachGrid::reach(shapes[0]));
+  EXPECT_EQ(grid.reachWithin(CGAL::Bbox_3(20, 20, 20, 21, 21, 21)), 0.0);
+}
