@@ -52,19 +52,27 @@ void refuseCollapsesNothingHolds(const MedialComplex& mc, std::vector<Index>& in
     corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
     return corners.size();
   };
+  std::vector<std::uint8_t> spanEnd(nv, 0);
   for (bool changed = true; changed;) {
     changed = false;
+    // Which polygons collapse, and the ends of the segments they span: only
+    // edges between two such ends are ever looked up below (a table of every
+    // edge was 0.37 s of the box's weld at 347 k samples).
+    std::fill(spanEnd.begin(), spanEnd.end(), 0);
+    for (std::size_t p = 0; p < mc.polygonCount(); ++p) {
+      collapses[p] = distinctCorners(p) < 3;
+      if (collapses[p] && corners.size() == 2) spanEnd[corners[0]] = spanEnd[corners[1]] = 1;
+    }
     // What the polygons that keep three corners hold: their vertices and edges.
     std::vector<std::uint8_t> held(nv, 0);
     PairTable heldEdges;
     for (std::size_t p = 0; p < mc.polygonCount(); ++p) {
-      collapses[p] = distinctCorners(p) < 3;
       if (collapses[p]) continue;
       const Index b = mc.polygonOffsets[p], e = mc.polygonOffsets[p + 1];
       for (Index k = b; k < e; ++k) {
         const Index u = mapped(mc.polygonVertices[k]), w = mapped(mc.polygonVertices[k + 1 < e ? k + 1 : b]);
         held[u] = 1;
-        if (u != w) heldEdges.insert(std::min(u, w), std::max(u, w), 1);
+        if (u != w && spanEnd[u] && spanEnd[w]) heldEdges.insert(std::min(u, w), std::max(u, w), 1);
       }
     }
     for (std::size_t p = 0; p < mc.polygonCount(); ++p) {

@@ -138,6 +138,11 @@ std::size_t thinFringe(MedialComplex& mc, const SampleSet& samples, const Fringe
                    smoothNeighbours(fa.b, fb.b);
   }
 
+  // Nothing to erode (a part with planar faces only: no chord of one smooth
+  // surface): the edges and the ball tree below (0.5 s on a box at 347 k
+  // samples) are not needed.
+  if (std::find(candidate.begin(), candidate.end(), 1) == candidate.end()) return 0;
+
   const ComplexEdges edges = buildComplexEdges(mc);
   std::vector<Index> edgeUse(edges.polygonCount);
   std::vector<Index> vertexUse(nv, 0);
