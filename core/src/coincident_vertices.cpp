@@ -210,8 +210,10 @@ std::size_t weldCoincidentVertices(MedialComplex& mc, double tolerance, std::siz
   std::vector<Index> order;
   order.reserve(nv);
   for (Index v = 0; v < nv; ++v) {
-    if (mc.vertexCell[v] == kNoIndex) continue;
     const Vec3& p = mc.vertices[v];
+    // Samples are distinct points; a non-finite vertex is near nothing (and
+    // would break the sort's order).
+    if (mc.vertexCell[v] == kNoIndex || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
     along[v] = ux * p[0] + uy * p[1] + uz * p[2];
     order.push_back(v);
   }

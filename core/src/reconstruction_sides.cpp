@@ -21,7 +21,7 @@ namespace {
 using namespace soup;
 
 // A cell whose volume is above 1e-6 of its longest edge cubed: its double
-// circumcentre is off by ~1e-16 × 1e6 of its radius (nearly flat cells get
+// circumcentre is off by ~eps × 3e6 of its radius at worst (nearly flat cells get
 // theirs from other formulas, delaunay.cpp, and some are no empty ball's).
 bool farFromFlat(const DelaunayVoronoi& dv, Index c) {
   const auto cell = dv.cell(c);
@@ -69,6 +69,7 @@ ReconstructionSides reconstructionSides(const SoupTree& mesh, const DelaunayVoro
   // How far into a triangle a point can be from its corners, per grid cell
   // (triangle_reach_grid.hpp): it spares most near queries and segments.
   const TriangleReachGrid reachGrid(mesh.triangles);
+  const bool samplesAreVertices = dv.sampleCount() + 1 == mesh.firstTriangle.size();
   std::vector<std::uint8_t> where(m, kNone), near(m, 0), wellShaped(m, 0);
   std::vector<Kernel::Point_3> centre(m);
   auto inBox = [&](const Kernel::Point_3& p, double grow) {
@@ -88,7 +89,7 @@ ReconstructionSides reconstructionSides(const SoupTree& mesh, const DelaunayVoro
       const Kernel::Point_3 p = mesh.permuted(x);
       centre[id] = p;
       where[id] = inBox(p, 0) ? kInBox : kOutOfBox;
-      wellShaped[id] = farFromFlat(dv, c);
+      wellShaped[id] = samplesAreVertices && farFromFlat(dv, c);
       // A zero band (cell_sides) makes "near" mean "on a triangle": such a
       // centre's segments all touch that triangle, so it links to nothing and
       // its group's ray starts at the centre itself, the ray a near cell would
@@ -130,8 +131,10 @@ ReconstructionSides reconstructionSides(const SoupTree& mesh, const DelaunayVoro
   // Every point of the Voronoi edge dual to facet abc has a, b and c as its
   // nearest samples, so its distance to the samples is its distance to a.
   // That holds for the exact circumcentres: only cells far from flat, whose
-  // rounded centres are off by ~1e-10 of their radius, take the short cut,
-  // with a margin 100 times that.
+  // rounded centres are off by ~1e-9 of their radius at worst, take the
+  // short cut, with a margin of 1e-8 of it and 1 % of the reach. It also
+  // needs every triangle corner to be a vertex of dv (dv the Delaunay of the
+  // samples): without that, none is taken.
   std::vector<std::uint8_t> linked(4 * m, 0);
   std::atomic<std::size_t> tests{0};
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 1024), [&](const tbb::blocked_range<std::size_t>& r) {

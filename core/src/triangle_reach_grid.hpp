@@ -31,7 +31,8 @@ namespace cadmedial::soup {
 
 class TriangleReachGrid {
  public:
-  // About two triangles per grid cell, at most 64 cells a side.
+  // About half as many cells as triangles, at most 64 a side (surface
+  // triangles crowd into the cells the surface crosses).
   explicit TriangleReachGrid(const Triangles& triangles) {
     if (triangles.empty()) return;
     box_ = triangles.front().bbox();
@@ -85,9 +86,12 @@ class TriangleReachGrid {
     // Obtuse at the corner opposite the longest edge L iff L² > b² + c²:
     // within L/2 along and the height 2 area / L across.
     if (2 * longest2 > edge2[0] + edge2[1] + edge2[2]) return std::sqrt(longest2 / 4 + 4 * area2 / longest2);
-    // R = abc / (4 area); no area left means all corners coincide.
+    // R = abc / (4 area), which is at least L/2 here: the clamp keeps a
+    // needle's rounded area from making it smaller. No area left means all
+    // corners coincide.
     if (!(area2 > 0)) return std::sqrt(longest2);
-    return std::min(std::sqrt(edge2[0] * edge2[1] * edge2[2] / (16 * area2)), std::sqrt(longest2));
+    const double circumradius = std::sqrt(edge2[0] * edge2[1] * edge2[2] / (16 * area2));
+    return std::clamp(circumradius, std::sqrt(longest2) / 2, std::sqrt(longest2));
   }
 
  private:

@@ -65,7 +65,7 @@ struct SoupTree {
 
   // The triangle with exactly these three samples as corners, or kNoIndex.
   Index triangleWith(Index a, Index b, Index c) const {
-    if (a + 1 >= firstTriangle.size()) return kNoIndex;
+    if (firstTriangle.empty() || a >= firstTriangle.size() - 1) return kNoIndex;
     for (Index k = firstTriangle[a]; k < firstTriangle[a + 1]; ++k) {
       const auto& t = corners[sampleTriangles[k]];
       const bool hasB = t[0] == b || t[1] == b || t[2] == b, hasC = t[0] == c || t[1] == c || t[2] == c;

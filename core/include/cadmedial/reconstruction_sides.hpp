@@ -47,7 +47,9 @@ struct ReconstructionSides {
 };
 
 // samples.triangles must form a closed manifold (checkSurfaceMesh); the
-// caller checks. deviation: per triangle (samples.triangleDeviation, or a
+// caller checks. dv is meant to be the Delaunay of samples.points: its
+// short cuts (reconstruction_sides.cpp) rely on the triangles' corners
+// being its vertices, and are not taken when the sample counts differ. deviation: per triangle (samples.triangleDeviation, or a
 // uniform band when that is empty). wanted (per cell id, optional): cells to
 // answer; the others are still used to link groups.
 ReconstructionSides reconstructionSides(const DelaunayVoronoi& dv, const SampleSet& samples,
