@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <CGAL/AABB_traits.h>
@@ -41,7 +42,9 @@ struct SoupTree {
   Triangles triangles;
   Tree tree;  // holds iterators into `triangles`: never copy or move a SoupTree
   std::vector<std::array<Index, 3>> corners;  // per triangle, its samples
-  std::vector<Index> firstTriangle, sampleTriangles;  // per sample (CSR): the triangles at it
+  // Per sample, the triangles at it: sampleTriangles[firstTriangle[s] ..
+  // firstTriangle[s + 1]), the SampleSet's umbrella lists.
+  std::vector<Index> firstTriangle, sampleTriangles;
 
   explicit SoupTree(const SampleSet& samples) {
     for (int k = 0; k < 3; ++k)
@@ -53,14 +56,17 @@ struct SoupTree {
     tree.insert(triangles.begin(), triangles.end());
     tree.build();
     corners = samples.triangles;
-    firstTriangle.assign(samples.size() + 1, 0);
-    for (const auto& t : corners)
-      for (Index v : t) ++firstTriangle[v + 1];
-    for (std::size_t v = 0; v < samples.size(); ++v) firstTriangle[v + 1] += firstTriangle[v];
-    sampleTriangles.resize(firstTriangle.back());
-    std::vector<Index> fill(firstTriangle.begin(), firstTriangle.end() - 1);
-    for (Index t = 0; t < corners.size(); ++t)
-      for (Index v : corners[t]) sampleTriangles[fill[v]++] = t;
+    if (samples.umbrellaOffsets.size() == samples.size() + 1) {
+      firstTriangle = samples.umbrellaOffsets;
+      sampleTriangles = samples.umbrellaTriangles;
+    } else {  // not built yet (SampleSet::buildUmbrellas)
+      SampleSet rebuilt;
+      rebuilt.points = samples.points;
+      rebuilt.triangles = samples.triangles;
+      rebuilt.buildUmbrellas();
+      firstTriangle = std::move(rebuilt.umbrellaOffsets);
+      sampleTriangles = std::move(rebuilt.umbrellaTriangles);
+    }
   }
 
   // The triangle with exactly these three samples as corners, or kNoIndex.
