@@ -29,6 +29,33 @@ std::size_t distinctCount(std::vector<std::uint64_t>& keys) {
   return static_cast<std::size_t>(std::unique(keys.begin(), keys.end()) - keys.begin());
 }
 
+// A welded polygon's corners as one cycle, without a corner repeating the
+// one before it (a zero-length edge) or the first.
+void weldedCycle(const MedialComplex& mc, std::size_t p, const std::vector<Index>& into, std::vector<Index>& cycle) {
+  cycle.clear();
+  for (Index k = mc.polygonOffsets[p]; k < mc.polygonOffsets[p + 1]; ++k) {
+    const Index v = into[mc.polygonVertices[k]];
+    if (cycle.empty() || cycle.back() != v) cycle.push_back(v);
+  }
+  while (cycle.size() > 1 && cycle.back() == cycle.front()) cycle.pop_back();
+}
+
+// The same cycle whatever its first corner and direction: the smallest of
+// its rotations and their reversals. Two polygons the weld makes equal span
+// one surface twice, a pillow: kept both, they would enclose a void (β2)
+// that is not there (box_fillet_variable: two Voronoi triangles that share
+// an edge and whose third corners coincide).
+std::vector<Index> canonicalCycle(const std::vector<Index>& cycle) {
+  const std::size_t n = cycle.size();
+  std::vector<Index> best = cycle, candidate(n);
+  for (std::size_t start = 0; start < n; ++start)
+    for (const bool forward : {true, false}) {
+      for (std::size_t i = 0; i < n; ++i) candidate[i] = cycle[forward ? (start + i) % n : (start + n - i) % n];
+      if (candidate < best) best = candidate;
+    }
+  return best;
+}
+
 // A polygon the weld shrinks below three distinct corners spans a point
 // or a segment: a degenerate facet (the diagonal of four cocircular
 // samples, whose cells share two circumcenters) goes, since the point or
@@ -97,7 +124,8 @@ void refuseCollapsesNothingHolds(const MedialComplex& mc, std::vector<Index>& in
 // cells), it pinches the complex and adds cycles (a box with filleted
 // edges: β1 0 -> 9). Clusters joined through the polygons that touch them
 // form groups; a group's weld is kept only when it adds no cycle: Δβ1 =
-// Δβ0 − Δχ <= 0 (β2 taken as unchanged), with χ counted over the
+// Δβ0 − Δχ <= 0 (β2 taken as unchanged: polygons the weld makes equal
+// count once, as the weld keeps one of them), with χ counted over the
 // vertices, edges and polygons the weld changes and β0 over the whole
 // complex. `into` maps each vertex to the vertex it is welded into;
 // refused groups map to themselves. Needs refuseCollapsesNothingHolds
@@ -143,18 +171,22 @@ void refuseWeldsThatAddCycles(const MedialComplex& mc, std::vector<Index>& into)
       }
   }
   std::vector<std::uint64_t> before, after, corners;
-  std::vector<Index> groupVertices;
+  std::vector<Index> groupVertices, cycle;
+  std::vector<std::vector<Index>> keptCycles;
   for (const std::vector<Index>& polygons : polygonsOf) {
     before.clear();
     after.clear();
     groupVertices.clear();
-    long long keptPolygons = 0;
+    keptCycles.clear();
     for (Index p : polygons) {
       const Index b = mc.polygonOffsets[p], e = mc.polygonOffsets[p + 1];
       corners.clear();
       for (Index k = b; k < e; ++k) corners.push_back(into[mc.polygonVertices[k]]);
       const bool collapses = distinctCount(corners) < 3;
-      keptPolygons += collapses ? 0 : 1;
+      if (!collapses) {
+        weldedCycle(mc, p, into, cycle);
+        keptCycles.push_back(canonicalCycle(cycle));
+      }
       for (Index k = b; k < e; ++k) {
         const Index u = mc.polygonVertices[k], w = mc.polygonVertices[k + 1 < e ? k + 1 : b];
         if (welds(u)) groupVertices.push_back(u);
@@ -169,7 +201,10 @@ void refuseWeldsThatAddCycles(const MedialComplex& mc, std::vector<Index>& into)
     for (Index v : groupVertices) verticesAfter += into[v] == v ? 1 : 0;
     const long long dV = verticesAfter - static_cast<long long>(groupVertices.size());
     const long long dE = static_cast<long long>(distinctCount(after)) - static_cast<long long>(distinctCount(before));
-    const long long dF = keptPolygons - static_cast<long long>(polygons.size());
+    // A polygon the weld makes equal to another goes (a pillow, above).
+    std::sort(keptCycles.begin(), keptCycles.end());
+    const auto keptPolygons = std::unique(keptCycles.begin(), keptCycles.end()) - keptCycles.begin();
+    const long long dF = static_cast<long long>(keptPolygons) - static_cast<long long>(polygons.size());
     // Components the weld joins (on a copy of the roots involved).
     std::vector<std::pair<Index, Index>> joins;
     for (Index v : groupVertices)
@@ -249,25 +284,34 @@ std::size_t weldCoincidentVertices(MedialComplex& mc, double tolerance, std::siz
   // Polygons on the kept vertices: a corner repeating the one before it
   // goes (a zero-length edge), and so does a polygon left with fewer than
   // three distinct corners (one whose span other polygons hold, above; A B
-  // A B counts as two).
-  std::vector<Index> vertices;
+  // A B counts as two), and one equal to an earlier polygon (a pillow:
+  // only polygons on a welded point can become equal).
+  std::vector<Index> members(nv, 0);
+  for (Index v = 0; v < nv; ++v) ++members[into[v]];
+  std::vector<Index> vertices, cycle;
   std::vector<Index> offsets{0};
   std::vector<std::uint8_t> keep(mc.polygonCount(), 1);
   std::vector<std::uint64_t> distinct;
+  std::vector<std::pair<std::vector<Index>, Index>> onWeldedPoints;  // canonical cycle, polygon
   for (std::size_t p = 0; p < mc.polygonCount(); ++p) {
-    const std::size_t start = vertices.size();
-    for (Index k = mc.polygonOffsets[p]; k < mc.polygonOffsets[p + 1]; ++k) {
-      const Index v = into[mc.polygonVertices[k]];
-      if (vertices.size() == start || vertices.back() != v) vertices.push_back(v);
-    }
-    while (vertices.size() > start + 1 && vertices.back() == vertices[start]) vertices.pop_back();
-    distinct.assign(vertices.begin() + static_cast<std::ptrdiff_t>(start), vertices.end());
+    weldedCycle(mc, p, into, cycle);
+    vertices.insert(vertices.end(), cycle.begin(), cycle.end());
+    offsets.push_back(static_cast<Index>(vertices.size()));
+    distinct.assign(cycle.begin(), cycle.end());
     if (distinctCount(distinct) < 3) {
       keep[p] = 0;
       if (facetsDropped && mc.provenance[p] == PolygonProvenance::DelaunayEdgeFacet) ++*facetsDropped;
+    } else if (std::any_of(cycle.begin(), cycle.end(), [&](Index v) { return members[v] > 1; })) {
+      onWeldedPoints.push_back({canonicalCycle(cycle), static_cast<Index>(p)});
     }
-    offsets.push_back(static_cast<Index>(vertices.size()));
   }
+  std::sort(onWeldedPoints.begin(), onWeldedPoints.end());
+  for (std::size_t i = 1; i < onWeldedPoints.size(); ++i)
+    if (onWeldedPoints[i].first == onWeldedPoints[i - 1].first) {
+      const Index p = onWeldedPoints[i].second;
+      keep[p] = 0;
+      if (facetsDropped && mc.provenance[p] == PolygonProvenance::DelaunayEdgeFacet) ++*facetsDropped;
+    }
   mc.polygonVertices = std::move(vertices);
   mc.polygonOffsets = std::move(offsets);
   keepPolygons(mc, keep);  // also drops the vertices no polygon uses (the welded ones)

@@ -242,6 +242,30 @@ TEST(Topology, CoincidentVoronoiVerticesAreWeldedIntoOne) {
   EXPECT_EQ(topologyOf(pinch).beta1, 0);
 }
 
+TEST(Topology, PolygonsTheWeldMakesEqualAreKeptOnce) {
+  // Two triangles on the edge 0-2 whose third corners 1 and 3 are one
+  // point (box_fillet_variable, at a fillet corner): welded they span one
+  // triangle twice, a pillow that encloses a void that is not there. One
+  // stays; a strip around them (4, 5) stays too.
+  MedialComplex mc = complexOf(6, {{0, 1, 2}, {0, 2, 3}, {0, 4, 1}, {4, 5, 1}});
+  mc.vertices[3] = {mc.vertices[1][0], mc.vertices[1][1] + 1e-14, mc.vertices[1][2]};
+  std::size_t dropped = 0;
+  EXPECT_EQ(weldCoincidentVertices(mc, 1e-9, &dropped), 1u);
+  EXPECT_EQ(dropped, 1u);
+  ASSERT_EQ(mc.polygonCount(), 3u);
+  const ComplexTopology t = topologyOf(mc);
+  EXPECT_EQ(t.beta0, 1);
+  EXPECT_EQ(t.beta1, 0);
+  EXPECT_EQ(t.beta2, 0);
+  // Quads equal up to their first corner and direction are one too; a quad
+  // on the same corners in another order (a bow tie) is not.
+  MedialComplex quads = complexOf(9, {{0, 1, 2, 3}, {2, 1, 0, 4}, {0, 2, 1, 5}, {6, 7, 8, 0}});
+  quads.vertices[4] = {quads.vertices[3][0] + 1e-14, quads.vertices[3][1], quads.vertices[3][2]};
+  quads.vertices[5] = {quads.vertices[3][0], quads.vertices[3][1], quads.vertices[3][2] + 1e-14};
+  EXPECT_EQ(weldCoincidentVertices(quads, 1e-9), 2u);
+  EXPECT_EQ(quads.polygonCount(), 3u);
+}
+
 TEST(Topology, CoincidentVerticesAreFoundWhateverLineTheyLieOn) {
   // The weld's sweep sorts the vertices along one direction: a run of
   // vertices on one line across it (a cylinder's axis) must still find

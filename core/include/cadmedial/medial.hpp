@@ -54,7 +54,7 @@ struct MedialCounts {
   std::size_t pointIslands = 0;                 // components dropped that are one point (zero-size facets)
   std::size_t forcedOnlyIslands = 0;            // components dropped that have no Voronoi facet
   std::size_t coincidentVerticesWelded = 0;     // Voronoi vertices joined to a coincident one (cospherical samples)
-  std::size_t degenerateFacetsDropped = 0;      // inner facets the weld left a segment or a point
+  std::size_t degenerateFacetsDropped = 0;      // inner facets the weld left a segment or a point, or made equal to another polygon
   std::size_t oracleChecked = 0;          // bounded selected facets checked by the inside oracle
   std::size_t oracleDisagreements = 0;    // ... whose walk label != oracle at their centroid
   std::size_t oracleForcedChecked = 0;    // forced triangles checked (reported apart: samples on the
