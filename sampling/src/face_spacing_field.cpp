@@ -20,6 +20,7 @@ struct Probe {
   double u, v;
   double spacing;
   double reach = 0;  // the probe's value holds unchanged this far (3D) before grading starts
+  double wall = 0;   // the wall thickness the ray found
 };
 
 // Wall thickness seen from a point of the face: a ray cast inward along the
@@ -29,6 +30,8 @@ struct Probe {
 // clamped to the spacing range.
 class ThicknessProber {
  public:
+  static constexpr double kOwnFaceReach = 1e-3;  // × h: a hit on the starting face closer than this is not a wall
+
   ThicknessProber(const TopoDS_Face& face, const BRepAdaptor_Surface& surf, IntCurvesFace_ShapeIntersector& rays,
                   double floor, double cap, double fraction)
       : face_(face), surf_(surf), rays_(rays), inFace_(face, 1e-9), floor_(floor), cap_(cap), fraction_(fraction) {}
@@ -44,14 +47,22 @@ class ThicknessProber {
     const gp_Vec normal = outwardNormalAt(face_, uv);
     if (normal.Magnitude() < 0.5) return false;
     const gp_Pnt p = surf_.Value(u, v);
-    rays_.Perform(gp_Lin(p, gp_Dir(-normal)), 1e-6 * cap_, 1e300);  // skips the face the ray starts on
+    rays_.Perform(gp_Lin(p, gp_Dir(-normal)), FaceSpacingField::raySkip(cap_), 1e300);  // skips the face the ray starts on
     if (!rays_.IsDone()) return false;
+    // The face the ray starts on can come back further than the skip where
+    // the coordinates are large (a part 100 m from the origin: 2.5e-6 mm
+    // off, an 8e-7 h thick wall, and 3 × the samples): a hit on it that
+    // close is not a wall.
     double thickness = 1e300;
-    for (int k = 1; k <= rays_.NbPnt(); ++k) thickness = std::min(thickness, rays_.WParameter(k));
+    for (int k = 1; k <= rays_.NbPnt(); ++k) {
+      const double w = rays_.WParameter(k);
+      if (w < kOwnFaceReach * cap_ && rays_.Face(k).IsSame(face_)) continue;
+      thickness = std::min(thickness, w);
+    }
     if (!(thickness < 1e300)) return false;
     const double reach = std::max(surf_.Value(u - du / 2, v - dv / 2).Distance(surf_.Value(u + du / 2, v + dv / 2)),
                                   surf_.Value(u - du / 2, v + dv / 2).Distance(surf_.Value(u + du / 2, v - dv / 2)));
-    out = {p, u, v, std::clamp(fraction_ * thickness, floor_, cap_), reach};
+    out = {p, u, v, std::clamp(fraction_ * thickness, floor_, cap_), reach, thickness};
     return true;
   }
 
@@ -113,6 +124,11 @@ FaceSpacingField::FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeI
   BRepTools::UVBounds(face, u0_, u1_, v0_, v1_);
   ThicknessProber prober(face, surf, solidRays, floor, cap, kThicknessFraction * boundsScale);
   const std::vector<Probe> thickness = thicknessProbes(prober, u0_, u1_, v0_, v1_);
+  for (const Probe& p : thickness)
+    if (p.wall < thinnestWall_) {
+      thinnestWall_ = p.wall;
+      thinnestWallAt_ = p.point;
+    }
 
   if (!graded) {
     // One number for the whole face: the smallest curvature bound on a 9 × 9

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <functional>
 #include <random>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -23,6 +24,9 @@
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -33,7 +37,11 @@
 #include <GProp_GProps.hxx>
 #include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopExp_Explorer.hxx>
+#include <ShapeFix_ShapeTolerance.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
+#include <gp_Trsf.hxx>
 #include <gp_Ax2.hxx>
 #include <gp_Vec.hxx>
 #include <nlohmann/json.hpp>
@@ -346,6 +354,92 @@ TEST(FaceSpacing, BoundsScaleMakesCurvatureAndThicknessSetFacesFiner) {
       EXPECT_GT(finer, 1.07 * atH) << name << (graded ? " graded" : " uniform");
       EXPECT_LT(finer, 1.20 * atH) << name << (graded ? " graded" : " uniform");
     }
+}
+
+// A 60 × 40 × 30 box with two edges filleted (radius 3): planes, cylinders,
+// convex edges with triplets and corners.
+TopoDS_Shape boxWithTwoFillets() {
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(60.0, 40.0, 30.0).Shape();
+  BRepFilletAPI_MakeFillet fillet(box);
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(box, TopAbs_EDGE, edges);
+  fillet.Add(3.0, TopoDS::Edge(edges(1)));
+  fillet.Add(3.0, TopoDS::Edge(edges(2)));
+  return fillet.Shape();
+}
+
+// The sampling does not depend on the model's unit: a part a few µm or a
+// few mm wide is sampled like its copy a metre wide, at the default spacing
+// (diagonal / 40). Rays cast for wall thickness were loaded with OCCT's
+// usual 1e-7 tolerance and skipped h/10⁶ of their start, so on a 6 µm box
+// every ray found its own face there, a wall that thin: 745 k samples
+// instead of 5 k (2026-12-04). A thin plate keeps its wall refinement at
+// every scale.
+TEST(FaceSpacing, SampleCountDoesNotDependOnTheModelsScale) {
+  const TopoDS_Shape filleted = boxWithTwoFillets();
+  const TopoDS_Shape plate = BRepPrimAPI_MakeBox(60.0, 60.0, 1.0).Shape();
+  for (const auto& [name, shape] : {std::pair{"filleted box", filleted}, std::pair{"thin plate", plate}}) {
+    const double atUnit = static_cast<double>(sampleSolid(shape, SamplingParams{}).samples.size());
+    for (const double scale : {1e-4, 1.0 / 60, 1e3}) {
+      gp_Trsf trsf;
+      trsf.SetScale(gp_Pnt(0, 0, 0), scale);
+      // B-spline faces with OCCT's usual 1e-7 tolerance on every sub-shape
+      // whatever the part's size, as FreeCAD's scaled copy exported to STEP
+      // has them (a scaled copy of planes keeps planes and scales the
+      // tolerances).
+      const TopoDS_Shape scaled =
+          BRepBuilderAPI_NurbsConvert(BRepBuilderAPI_Transform(shape, trsf, true).Shape(), true).Shape();
+      ShapeFix_ShapeTolerance().SetTolerance(scaled, 1e-7);
+      const double count = static_cast<double>(sampleSolid(scaled, SamplingParams{}).samples.size());
+      std::printf("%s: %g samples at scale 1, %g at scale %g\n", name, atUnit, count, scale);
+      EXPECT_NEAR(count, atUnit, 0.02 * atUnit) << name << " at scale " << scale;
+    }
+  }
+}
+
+// Nor on where the part is: assembly coordinates put parts metres from the
+// origin. There the rounding of p − s in the triplets' Newton runs (a few
+// 1e-13 at 1 m) exceeded its 1e-13 × leg test, so every run failed: the box
+// below lost 157 of 267 triplets at 1 m and 263 at 10 m, and with them
+// 55-95 % of its convex-edge attachment. At 100 m the thickness rays found
+// their own face 2.5e-6 mm away, a wall that thin (3 × the samples).
+TEST(Triplets, EveryTripletIsPlacedFarFromTheOrigin) {
+  const TopoDS_Shape atOrigin = boxWithTwoFillets();
+  const SolidSampling reference = sampleSolid(atOrigin, SamplingParams{});
+  ASSERT_GT(reference.report.triplets, 200u);
+  EXPECT_EQ(reference.report.tripletsDropped, 0u);
+  for (const double metres : {1.0, 10.0, 100.0}) {
+    gp_Trsf trsf;
+    trsf.SetTranslation(gp_Vec(1e3 * metres, -2e3 * metres, 5e2 * metres));
+    const TopoDS_Shape moved = BRepBuilderAPI_Transform(atOrigin, trsf, true).Shape();
+    const SolidSampling far = sampleSolid(moved, SamplingParams{});
+    std::printf("%g m: %zu triplets (%zu dropped), %zu samples; at the origin %zu, %zu\n", metres,
+                far.report.triplets, far.report.tripletsDropped, far.samples.size(), reference.report.triplets,
+                reference.samples.size());
+    EXPECT_EQ(far.report.tripletsDropped, 0u) << metres << " m";
+    EXPECT_EQ(far.report.triplets, reference.report.triplets) << metres << " m";
+    EXPECT_NEAR(static_cast<double>(far.samples.size()), static_cast<double>(reference.samples.size()),
+                0.02 * static_cast<double>(reference.samples.size()))
+        << metres << " m";
+  }
+}
+
+// A wall whose spacing would have to go below the floor (h / 16) gets a
+// warning that says where it is and what spacing resolves it; a wall the
+// floor can follow gets none. At h = 10: the floor 0.625 follows walls down
+// to 0.625 / 0.4 = 1.56 thick.
+TEST(FaceSpacing, WallsThinnerThanTheFinestSpacingAreWarnedAbout) {
+  SamplingParams params;
+  params.spacing = 10.0;
+  auto warnings = [&](double thickness) {
+    return sampleSolid(BRepPrimAPI_MakeBox(10.0, 10.0, thickness).Shape(), params).report.warnings;
+  };
+  EXPECT_TRUE(warnings(4.0).empty());
+  EXPECT_TRUE(warnings(2.0).empty());
+  const std::vector<std::string> foil = warnings(0.01);
+  ASSERT_EQ(foil.size(), 1u);
+  EXPECT_NE(foil[0].find("a wall 0.01 thick at ("), std::string::npos) << foil[0];
+  EXPECT_NE(foil[0].find("--spacing 0.064 or finer"), std::string::npos) << foil[0];
 }
 
 // Graded spacing is the default of `cadmedial sample` (and --graded-spacing
