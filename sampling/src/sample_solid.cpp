@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -9,6 +10,7 @@
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 
+#include "cadmedial/errors.hpp"
 #include "cadmedial/sampling.hpp"
 #include "feature_classification.hpp"
 #include "sampling_context.hpp"
@@ -58,6 +60,20 @@ Bnd_Box boundingBox(const TopoDS_Shape& shape) {
   Bnd_Box box;
   BRepBndLib::AddOptimal(shape, box, false, false);
   return box;
+}
+
+// A spacing that asks for more face samples than any machine holds (area /
+// h² above 1e8, about 100 × the 2 GiB of a million samples) is refused
+// before any work, with the spacing of about a million samples: `--spacing
+// 1e-9` on a 60 mm box ran for 10 minutes without end.
+void refuseSpacingBeyondReach(double area, double spacing) {
+  constexpr double kMaxSamples = 1e8;
+  if (!(area / (spacing * spacing) > kMaxSamples)) return;
+  std::ostringstream message;
+  message << std::setprecision(3) << "spacing " << spacing << " would need about " << area / (spacing * spacing)
+          << " samples on a surface of area " << area << " (at most " << kMaxSamples
+          << "); a spacing of " << std::sqrt(area / 1e6) << " gives about a million";
+  throw InputError(kExitUsage, message.str());
 }
 
 // A wall thinner than the finest spacing can follow (0.4 × its thickness
@@ -113,6 +129,10 @@ SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& param
   t = Clock::now();
   SamplingContext ctx(topo, edgeFeatures, vertexFeatures);
   ctx.spacing = params.spacing > 0 ? params.spacing : defaultSpacing(solid);
+  GProp_GProps area;
+  BRepGProp::SurfaceProperties(solid, area);
+  report.exactArea = area.Mass();
+  refuseSpacingBeyondReach(report.exactArea, ctx.spacing);
   ctx.minSpacing = ctx.spacing * params.minSpacingFraction;
   ctx.gradedSpacing = params.gradedSpacing;
   ctx.boundsScale = params.boundsScale;
@@ -169,11 +189,9 @@ SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& param
   report.worstFaceAreaError = rec.worstFaceAreaError;
   report.worstFace = rec.worstFace;
 
-  GProp_GProps volume, area;
+  GProp_GProps volume;
   BRepGProp::VolumeProperties(solid, volume);
-  BRepGProp::SurfaceProperties(solid, area);
   report.exactVolume = volume.Mass();
-  report.exactArea = area.Mass();
   for (const std::string& problem : rec.problems) report.warnings.push_back("reconstruction: " + problem);
   if (!report.surface.closedManifold())
     report.warnings.push_back("stitched surface is not a closed manifold: " +

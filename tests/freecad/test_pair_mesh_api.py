@@ -183,39 +183,39 @@ def main():
                                            progress=lambda s, i, n: stop.set() if s == "medial" else None),
                  cadmedial.Cancelled, "cancel", "cancel before the pair-mesh stage")
 
-    # --- sampled again (cli/solid_run.hpp): the lever at h = 10 with one spacing per face keeps 1
-    # inverted element at h and at 0.97 h and is valid with every spacing x 0.94 (h = 8.93 until the
-    # edge split stopped folding the boundary, 2026-12-03: valid at once since; the CLI test
-    # test_not_valid_at_the_spacing_asked_samples_again_finer holds the same); the stages come
-    # again per sampling, and a cancel there still stops. (Graded at its default spacing the lever
-    # needed 0.97 h until faces were graded from finer convex edges; it is valid at once now.)
-    lever = os.path.join(source_dir, "..", "shared", "models", "public", "bm2_ec_lever-A.stp")
-    if os.path.exists(lever):
+    # --- sampled again (cli/solid_run.hpp): NIST CTC-01 at its default spacing with one spacing
+    # per face keeps 1 inverted element at h and at 0.97 h and is valid with every spacing x 0.94
+    # (since 2026-12-04, when the triplets that rounding had dropped were placed; the lever at
+    # h = 10 before; the CLI test test_not_valid_at_the_spacing_asked_samples_again_finer holds
+    # the same); the stages come again per sampling, and a cancel there still stops.
+    ctc01 = os.path.join(source_dir, "..", "shared", "models", "public", "nist_ctc_01_asme1_rd.stp")
+    if os.path.exists(ctc01):
         stages, stamps = [], []
 
         def note_stage(stage, i, n):
             stages.append(stage)
             stamps.append(time.perf_counter())
 
-        options = dict(spacing=10.0, graded_spacing=False, pair_mesh=True, check_inside=False)
-        (axis,) = cadmedial.compute(lever, progress=note_stage, **options)
+        options = dict(graded_spacing=False, pair_mesh=True, check_inside=False)
+        (axis,) = cadmedial.compute(ctc01, progress=note_stage, **options)
         attempts = axis.pair_mesh.report["attempts"]
-        check(stages == ["read"] + ["sample", "medial", "pair_mesh"] * 3 + ["done"], f"lever: stages {stages}")
+        check(stages == ["read"] + ["sample", "medial", "pair_mesh"] * 3 + ["done"], f"CTC-01: stages {stages}")
         # end_to_end counts every sampling (seconds.total is the kept one's axis).
         seconds = axis.summary["seconds"]
         check(seconds["end_to_end"] >= stamps[-2] - stamps[1] > seconds["total"],
-              f"lever: end_to_end {seconds} spans every sampling ({stamps[-2] - stamps[1]:.2f} s)")
+              f"CTC-01: end_to_end {seconds} spans every sampling ({stamps[-2] - stamps[1]:.2f} s)")
         check([a["valid"] for a in attempts] == [False, False, True] and attempts[2]["kept"]
-              and attempts[2]["every_spacing"] and abs(axis.spacing - 0.94 * 10.0) < 1e-9 * axis.spacing
+              and attempts[2]["every_spacing"]
+              and abs(axis.spacing - 0.94 * attempts[0]["spacing"]) < 1e-9 * axis.spacing
               and axis.pair_mesh.valid,
-              f"lever: sampled again with every spacing x 0.94 and kept, valid: {attempts}")
+              f"CTC-01: sampled again with every spacing x 0.94 and kept, valid: {attempts}")
         samplings = [0]
 
         def stop_at_second_sampling(stage, i, n):
             samplings[0] += stage == "sample"
             return samplings[0] < 2
 
-        expect_error(lambda: cadmedial.compute(lever, progress=stop_at_second_sampling, **options),
+        expect_error(lambda: cadmedial.compute(ctc01, progress=stop_at_second_sampling, **options),
                      cadmedial.Cancelled, "cancel", "cancel while sampling again")
 
 

@@ -164,6 +164,39 @@ TEST_F(BadInputs, UnwritableOutputFolderIsExitCodeFive) {
   EXPECT_FALSE(fs::exists(dir_ / "has_solid_file" / "summary.json"));
 }
 
+// A spacing that would need more samples than any machine holds is refused
+// at once, as a bad command line (exit 2, one line with a spacing that
+// works), for `sample` and `run` alike, and nothing is written: `--spacing
+// 1e-9` on a 60 mm box ran for 10 minutes without end before 2026-12-04.
+// The library says the same with an InputError.
+TEST_F(BadInputs, SpacingBeyondAnyMachineIsRefusedAtOnce) {
+  const std::string box = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";
+  for (const std::string command : {"sample", "run"}) {
+    const fs::path out = dir_ / ("tiny_spacing_" + command), errFile = dir_ / "stderr.txt";
+    const std::string cmd = "timeout 120 " + std::string(CADMEDIAL_CLI) + " " + command + " '" + box +
+                            "' --spacing 1e-9 -o '" + out.string() + "' >/dev/null 2>'" + errFile.string() + "'";
+    const int status = std::system(cmd.c_str());
+    std::ifstream in(errFile);
+    const std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_TRUE(WIFEXITED(status)) << cmd;
+    EXPECT_EQ(WEXITSTATUS(status), kExitUsage) << cmd << "\n" << err;
+    EXPECT_NE(err.find("spacing 1e-09 would need about"), std::string::npos) << err;
+    EXPECT_NE(err.find("gives about a million"), std::string::npos) << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+    EXPECT_FALSE(fs::exists(out / "solid_0")) << command;
+  }
+  SamplingParams params;
+  params.spacing = 1e-9;
+  try {
+    sampleSolid(loadModel(box).solids.at(0), params);
+    ADD_FAILURE() << "sampleSolid accepted a spacing of 1e-9";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.code(), kExitUsage);
+  }
+  params.spacing = 1.0;  // 4,000 samples or so: accepted
+  EXPECT_GT(sampleSolid(loadModel(box).solids.at(0), params).samples.size(), 1000u);
+}
+
 TEST_F(BadInputs, InvalidSolidIsRepairedAndSampled) {
   const TopoDS_Shape hollow = hollowedFilletedBox();
   // Without this precondition the test would not exercise the repair.
