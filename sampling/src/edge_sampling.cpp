@@ -321,8 +321,8 @@ void sampleVerticesAndEdges(SamplingContext& ctx, SampleBuilder& builder) {
 namespace {
 
 // The point of `face` at distance `leg` from s in the plane through s normal
-// to the unit `tangent`, found by Newton's method in UV from `start`. Converged when
-// within 1e-13 of the leg, plus what rounding leaves of p − s where the
+// to the unit `tangent`, found by Newton's method in UV from `uv`. Converged
+// when within 1e-13 × the leg, plus what rounding leaves of p − s where the
 // coordinates are large: a part 1 m from the origin has p and s each a few
 // 1e-13 off, more than 1e-13 × a 1 mm leg, and every Newton run failed there
 // (a filleted box moved by (1, −2, 0.5) m lost 157 of 267 triplets and 55 %

@@ -42,8 +42,9 @@ class FaceSpacingField {
   // ray's first hit must be to count as a wall, for a spacing h. OCCT's
   // usual 1e-7 (mm) is not small next to a part a few mm wide: on a box of
   // 6 µm (h 0.2 µm) every ray found its own face at the skip distance h/10⁶,
-  // a wall that thin, and the part took 745 k samples instead of 5 k. Both
-  // scale with h below h = 0.01 and are OCCT's usual above it.
+  // a wall that thin, and the part took 745 k samples instead of 5 k. The
+  // tolerance is OCCT's usual for h ≥ 0.01 and 1e-5 h below; the skip is
+  // 1e-6 h for h ≥ 1 (as before), 1e-6 for 0.01 ≤ h < 1 and 1e-4 h below.
   static double rayTolerance(double h) { return std::min(1e-7, 1e-5 * h); }
   static double raySkip(double h) { return std::max(1e-6 * h, 10 * rayTolerance(h)); }
 

@@ -257,6 +257,17 @@ TEST(Topology, PolygonsTheWeldMakesEqualAreKeptOnce) {
   EXPECT_EQ(t.beta0, 1);
   EXPECT_EQ(t.beta1, 0);
   EXPECT_EQ(t.beta2, 0);
+  // The cycle rule counts a pillow's two polygons once: a weld that makes
+  // a pillow (1 and 3) and, in the same group (through polygon 1-4-7),
+  // closes the loop 4-7-9 (6 onto 4) adds a cycle and is refused. Counted
+  // twice, the pillow looked like a cycle removed and the weld was kept.
+  MedialComplex hiding = complexOf(11, {{0, 1, 2}, {0, 2, 3}, {1, 4, 7}, {7, 9, 10}, {9, 6, 8}});
+  hiding.vertices[3] = {hiding.vertices[1][0], hiding.vertices[1][1] + 1e-14, hiding.vertices[1][2]};
+  hiding.vertices[6] = {hiding.vertices[4][0], hiding.vertices[4][1], hiding.vertices[4][2] + 1e-14};
+  EXPECT_EQ(topologyOf(hiding).beta1, 0);
+  EXPECT_EQ(weldCoincidentVertices(hiding, 1e-9), 0u);
+  EXPECT_EQ(hiding.polygonCount(), 5u);
+  EXPECT_EQ(topologyOf(hiding).beta1, 0);
   // Quads equal up to their first corner and direction are one too; a quad
   // on the same corners in another order (a bow tie) is not.
   MedialComplex quads = complexOf(9, {{0, 1, 2, 3}, {2, 1, 0, 4}, {0, 2, 1, 5}, {6, 7, 8, 0}});

@@ -90,11 +90,13 @@ std::size_t dropForcedOnlyIslands(MedialComplex& complex, std::size_t* polygonsR
 // Joins Voronoi vertices closer than `tolerance` (cospherical samples: one
 // vertex, several cells, circumcenters apart by rounding) into the first of
 // them; drops zero-length polygon edges and polygons left with fewer than
-// three corners (only where other polygons hold what they span), keeps a
-// group of welds only when it adds no cycle (β1 from χ and β0), and records
-// the cells joined in weldedCells. Returns the number of vertices welded;
-// *facetsDropped the Voronoi facets dropped (degenerate: a segment or a
-// point once welded). See coincident_vertices.cpp. Call before
+// three corners (only where other polygons hold what they span) and
+// polygons made equal to an earlier one (a pillow), keeps a group of welds
+// only when it adds no cycle (β1 from χ and β0), and records the cells
+// joined in weldedCells. Returns the number of vertices welded;
+// *facetsDropped the Voronoi facets (not forced triangles) dropped: a
+// segment or a point once welded, or equal to another polygon. See
+// coincident_vertices.cpp. Call before
 // buildComplexEdges.
 std::size_t weldCoincidentVertices(MedialComplex& complex, double tolerance, std::size_t* facetsDropped = nullptr);
 
