@@ -180,13 +180,10 @@ void refuseWeldsThatAddCycles(const MedialComplex& mc, std::vector<Index>& into)
     keptCycles.clear();
     for (Index p : polygons) {
       const Index b = mc.polygonOffsets[p], e = mc.polygonOffsets[p + 1];
-      corners.clear();
-      for (Index k = b; k < e; ++k) corners.push_back(into[mc.polygonVertices[k]]);
+      weldedCycle(mc, p, into, cycle);
+      corners.assign(cycle.begin(), cycle.end());
       const bool collapses = distinctCount(corners) < 3;
-      if (!collapses) {
-        weldedCycle(mc, p, into, cycle);
-        keptCycles.push_back(canonicalCycle(cycle));
-      }
+      if (!collapses) keptCycles.push_back(canonicalCycle(cycle));
       for (Index k = b; k < e; ++k) {
         const Index u = mc.polygonVertices[k], w = mc.polygonVertices[k + 1 < e ? k + 1 : b];
         if (welds(u)) groupVertices.push_back(u);

@@ -30,8 +30,6 @@ struct Probe {
 // clamped to the spacing range.
 class ThicknessProber {
  public:
-  static constexpr double kOwnFaceReach = 1e-3;  // × h (+ 1e-9 of the coordinates): a hit on the starting face closer than this is not a wall
-
   ThicknessProber(const TopoDS_Face& face, const BRepAdaptor_Surface& surf, IntCurvesFace_ShapeIntersector& rays,
                   double floor, double cap, double fraction)
       : face_(face), surf_(surf), rays_(rays), inFace_(face, 1e-9), floor_(floor), cap_(cap), fraction_(fraction) {}
@@ -49,17 +47,11 @@ class ThicknessProber {
     const gp_Pnt p = surf_.Value(u, v);
     rays_.Perform(gp_Lin(p, gp_Dir(-normal)), FaceSpacingField::raySkip(cap_), 1e300);  // skips the face the ray starts on
     if (!rays_.IsDone()) return false;
-    // The face the ray starts on can come back further than the skip where
-    // the coordinates are large: OCCT's intersector is good to ~1e-11 of
-    // them (a part 100 m from the origin: 2.5e-6 mm off, an 8e-7 h thick
-    // wall, and 3 × the samples). A hit on it that close is not a wall.
-    // (Telling the ray's entry from its exit by the hit's transition would
-    // not need a distance; not tried.)
-    const double ownFaceReach = kOwnFaceReach * cap_ + 1e-9 * (std::abs(p.X()) + std::abs(p.Y()) + std::abs(p.Z()));
+    const double ownFaceLimit = FaceSpacingField::ownFaceReach(cap_, p);
     double thickness = 1e300;
     for (int k = 1; k <= rays_.NbPnt(); ++k) {
       const double w = rays_.WParameter(k);
-      if (w < ownFaceReach && rays_.Face(k).IsSame(face_)) continue;
+      if (w < ownFaceLimit && rays_.Face(k).IsSame(face_)) continue;
       thickness = std::min(thickness, w);
     }
     if (!(thickness < 1e300)) return false;

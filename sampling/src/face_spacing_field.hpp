@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -47,6 +48,15 @@ class FaceSpacingField {
   // 1e-6 h for h ≥ 1 (as before), 1e-6 for 0.01 ≤ h < 1 and 1e-4 h below.
   static double rayTolerance(double h) { return std::min(1e-7, 1e-5 * h); }
   static double raySkip(double h) { return std::max(1e-6 * h, 10 * rayTolerance(h)); }
+  // A hit on the ray's own face closer than this to its start p is not a
+  // wall either: the face can come back further than the skip where the
+  // coordinates are large, as OCCT's intersector is good to ~1e-11 of them
+  // (a part 100 m from the origin: 2.5e-6 mm off, an 8e-7 h thick wall, and
+  // 3 × the samples). Telling the ray's entry from its exit by the hit's
+  // transition would not need a distance; not tried.
+  static double ownFaceReach(double h, const gp_Pnt& p) {
+    return 1e-3 * h + 1e-9 * (std::abs(p.X()) + std::abs(p.Y()) + std::abs(p.Z()));
+  }
 
   // Probes `face` (curvature on a node grid, wall thickness by rays cast
   // inward through `solidRays`, loaded with rayTolerance(cap)), clamps every value to [floor, cap] and grades

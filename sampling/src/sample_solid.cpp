@@ -91,12 +91,12 @@ void warnAboutUnresolvedWalls(const SamplingContext& ctx, const SamplingParams& 
   const gp_Pnt& at = thinnest->thinnestWallAt();
   // The spacing suggested is rounded down to 3 digits, so that it does resolve the wall.
   const double needed = fraction * wall / params.minSpacingFraction;
-  const double digits = std::pow(10.0, std::floor(std::log10(needed)) - 2);
+  const double thirdDigit = std::pow(10.0, std::floor(std::log10(needed)) - 2);
   std::ostringstream message;
-  message << std::setprecision(7) << "a wall " << std::setprecision(3) << wall << " thick at ("
+  message << std::setprecision(3) << "a wall " << wall << " thick at ("
           << std::setprecision(7) << at.X() << ", " << at.Y() << ", " << at.Z() << std::setprecision(3)
           << ") is thinner than the finest spacing " << ctx.minSpacing << " can follow (it needs " << fraction * wall
-          << "): the axis there is approximate; --spacing " << std::floor(needed / digits) * digits
+          << "): the axis there is approximate; --spacing " << std::floor(needed / thirdDigit) * thirdDigit
           << " or finer resolves it";
   report.warnings.push_back(message.str());
 }

@@ -47,15 +47,21 @@ class BadInputs : public ::testing::Test {
     std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     return write("truncated.step", all.substr(0, all.size() / 2));
   }
-  // Runs the CLI; returns its exit code and leaves stderr in `err`.
-  int runCli(const std::string& model, std::string& err) {
-    const fs::path out = dir_ / "out", errFile = dir_ / "stderr.txt";
-    const std::string cmd = std::string(CADMEDIAL_CLI) + " sample '" + model + "' -o '" + out.string() +
-                            "' >/dev/null 2>'" + errFile.string() + "'";
+  // Runs `cadmedial COMMAND 'MODEL' ARGS -o 'OUT'` (at most 120 s); returns
+  // its exit code (-1 if it did not exit) and leaves stderr in `err`.
+  int runCommand(const std::string& command, const std::string& model, const std::string& args,
+                 const std::string& out, std::string& err) {
+    const fs::path errFile = dir_ / "stderr.txt";
+    const std::string cmd = "timeout 120 " + std::string(CADMEDIAL_CLI) + " " + command + " '" + model + "' " + args +
+                            " -o '" + out + "' >/dev/null 2>'" + errFile.string() + "'";
     const int status = std::system(cmd.c_str());
     std::ifstream in(errFile);
     err.assign((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  // `cadmedial sample MODEL`.
+  int runCli(const std::string& model, std::string& err) {
+    return runCommand("sample", model, "", (dir_ / "out").string(), err);
   }
   static ExitCode codeOf(const std::string& path) {
     try {
@@ -147,14 +153,8 @@ TEST_F(BadInputs, UnwritableOutputFolderIsExitCodeFive) {
   const std::string solidAsFile = write("has_solid_file/solid_0", "in the way\n");
   for (const std::string command : {"sample", "run"})
     for (const std::string& out : {blocker, blocker + "/sub", (dir_ / "has_solid_file").string()}) {
-      const fs::path errFile = dir_ / "stderr.txt";
-      const std::string cmd = std::string(CADMEDIAL_CLI) + " " + command + " '" + box + "' -o '" + out +
-                              "' >/dev/null 2>'" + errFile.string() + "'";
-      const int status = std::system(cmd.c_str());
-      std::ifstream in(errFile);
-      const std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-      ASSERT_TRUE(WIFEXITED(status)) << cmd;
-      EXPECT_EQ(WEXITSTATUS(status), kExitOutputFailed) << cmd << "\n" << err;
+      std::string err;
+      EXPECT_EQ(runCommand(command, box, "", out, err), kExitOutputFailed) << command << " -o " << out << "\n" << err;
       EXPECT_NE(err.find("cannot create the output folder"), std::string::npos) << err;
       EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
     }
@@ -172,14 +172,9 @@ TEST_F(BadInputs, UnwritableOutputFolderIsExitCodeFive) {
 TEST_F(BadInputs, SpacingBeyondAnyMachineIsRefusedAtOnce) {
   const std::string box = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";
   for (const std::string command : {"sample", "run"}) {
-    const fs::path out = dir_ / ("tiny_spacing_" + command), errFile = dir_ / "stderr.txt";
-    const std::string cmd = "timeout 120 " + std::string(CADMEDIAL_CLI) + " " + command + " '" + box +
-                            "' --spacing 1e-9 -o '" + out.string() + "' >/dev/null 2>'" + errFile.string() + "'";
-    const int status = std::system(cmd.c_str());
-    std::ifstream in(errFile);
-    const std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    ASSERT_TRUE(WIFEXITED(status)) << cmd;
-    EXPECT_EQ(WEXITSTATUS(status), kExitUsage) << cmd << "\n" << err;
+    const fs::path out = dir_ / ("tiny_spacing_" + command);
+    std::string err;
+    EXPECT_EQ(runCommand(command, box, "--spacing 1e-9", out.string(), err), kExitUsage) << command << "\n" << err;
     EXPECT_NE(err.find("spacing 1e-09 would need about"), std::string::npos) << err;
     EXPECT_NE(err.find("gives about a million"), std::string::npos) << err;
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
