@@ -51,6 +51,7 @@ nlohmann::json medialSummaryJson(const SamplingReport& sampling, const MedialRes
                       {"walk_blocked_crossings", c.walkBlockedCrossings},
                       {"walk_surface_crossings_refused", c.walkSurfaceCrossingsRefused},
                       {"inner_facets_outside_surface", c.innerFacetsOutsideSurface},
+                      {"near_facets_outside_exactly", c.nearFacetsOutsideExactly},
                       {"single_facet_holes_filled", c.singleFacetHolesFilled},
                       {"fringe_polygons_thinned", c.fringePolygonsThinned},
                       {"sub_resolution_islands", c.subResolutionIslands},

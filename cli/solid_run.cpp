@@ -40,13 +40,13 @@ SolidResult attempt(const TopoDS_Shape& solid, const SamplingParams& sampling, c
   call(stage, "medial");
   InsideOracle oracle;
   BRepClass3d_SolidClassifier classifier(solid);
-  if (withOracle)
-    oracle = [&classifier](const Vec3& p) {
-      classifier.Perform(gp_Pnt(p[0], p[1], p[2]), 1e-9);
-      return classifier.State() == TopAbs_IN;
-    };
+  const InsideOracle exactInside = [&classifier](const Vec3& p) {
+    classifier.Perform(gp_Pnt(p[0], p[1], p[2]), 1e-9);
+    return classifier.State() == TopAbs_IN;
+  };
+  if (withOracle) oracle = exactInside;
   const SampleSet& samples = triangulated.sampled.samples;
-  run.medial = computeCadMedial(*triangulated.triangulation, samples, *triangulated.prepared, params, oracle);
+  run.medial = computeCadMedial(*triangulated.triangulation, samples, *triangulated.prepared, params, oracle, exactInside);
   run.secondsAxis = secondsSince(start);
   if (pairMesh) {
     call(stage, "pair_mesh");

@@ -37,7 +37,8 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
 }
 
 MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& samples, const PreparedSamples& prepared,
-                              const MedialParams& params, const InsideOracle& oracle) {
+                              const MedialParams& params, const InsideOracle& oracle,
+                              const InsideOracle& exactSideNearSurface) {
   samples.validate();
   if (dv.sampleCount() != samples.size())
     throw std::invalid_argument("computeCadMedial: triangulation and SampleSet differ in size");
@@ -86,7 +87,7 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
                                  params.nearSurfaceFraction * spacing, &onRing);
   }
   r.times.cellSides = watch.seconds();
-  r.labels = separateInnerOuter(dv, samples, selected, r.forced, params, oracle, cellSide);
+  r.labels = separateInnerOuter(dv, samples, selected, r.forced, params, oracle, cellSide, exactSideNearSurface);
   r.times.walk = r.labels.seconds;
   r.times.oracle = r.labels.oracleSeconds;
 
@@ -145,6 +146,7 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
   c.walkBlockedCrossings = r.labels.blockedCrossings;
   c.walkSurfaceCrossingsRefused = r.labels.surfaceCrossingsRefused;
   c.innerFacetsOutsideSurface = r.labels.innerFacetsOutsideSurface;
+  c.nearFacetsOutsideExactly = r.labels.nearFacetsOutsideExactly;
   c.oracleChecked = r.labels.oracleFacetsChecked;
   c.oracleDisagreements = r.labels.oracleFacetDisagreements;
   c.oracleForcedChecked = r.labels.oracleForcedChecked;
