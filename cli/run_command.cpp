@@ -18,6 +18,7 @@
 #include "medial_outputs.hpp"
 #include "pair_mesh_stage.hpp"
 #include "solid_run.hpp"
+#include "topology_check.hpp"
 #include "medial_summary.hpp"
 #include "point_input.hpp"
 #include "run_points_command.hpp"
@@ -108,6 +109,11 @@ int runRunCommand(const RunCommandOptions& options) {
     // preparation), so their sum is more.
     const double seconds = secondsRead + secondsSince(solidStart);
     summary["seconds"]["end_to_end"] = seconds;
+    const SolidBetti solidBetti = solidBettiNumbers(model.solids[i]);
+    summary["topology"]["solid"] = {
+        {"beta0", solidBetti.beta0}, {"beta1", solidBetti.beta1}, {"beta2", solidBetti.beta2}};
+    const std::string topologyWarning = topologyMismatchWarning(medial.topology, solidBetti, sampled.samples.spacing);
+    summary["topology"]["warning"] = topologyWarning;
     writeFileAtomically(dir + "/summary.json", [&](std::ofstream& out) { out << summary.dump(2) << "\n"; });
 
     char betti[32];
@@ -117,6 +123,7 @@ int runRunCommand(const RunCommandOptions& options) {
                 medial.counts.oracleChecked, medial.counts.oracleDisagreements, medial.counts.tripletsNotDelaunay,
                 seconds);
     for (const std::string& w : sampled.report.warnings) std::cerr << "warning: solid " << i << ": " << w << "\n";
+    if (!topologyWarning.empty()) std::cerr << "warning: solid " << i << ": " << topologyWarning << "\n";
   }
   std::printf("outputs in %s (per solid: medial.ply, medial.obj, medial.ma, summary.json%s)\n", options.outDir.c_str(),
               options.pairMesh ? ", pairmesh.vtu, pairmesh.node/.ele, iso_<t>.ply" : "");

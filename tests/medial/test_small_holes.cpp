@@ -27,6 +27,7 @@
 #include "cadmedial/sampling.hpp"
 #include "medial_mesh_conversion.hpp"
 #include "solid_run.hpp"
+#include "topology_check.hpp"
 
 namespace cadmedial {
 namespace {
@@ -75,6 +76,32 @@ TEST_P(SmallHole, TheAxisGoesRoundTheHoleAndNotIntoIt) {
   EXPECT_GE(r.attachment.edgeShare, 0.99);
   EXPECT_EQ(r.topology.beta0, 1);
   EXPECT_EQ(r.topology.beta1, 1);
+  // The run's own check agrees with the exact evaluation: nothing to warn of.
+  EXPECT_EQ(topologyMismatchWarning(m.topology, solidBettiNumbers(solid), run.sampled.samples.spacing), "");
+}
+
+// `cadmedial run` warns when the axis's β0, β1 differ from the solid's
+// (β1 of a complex too large for the exact rank is -1: then β0 alone).
+TEST(TopologyCheck, AnAxisWhoseTopologyDiffersFromTheSolidsIsWarnedAbout) {
+  SolidBetti plate;  // a plate with one hole
+  plate.beta1 = 1;
+  ComplexTopology axis;
+  axis.beta0 = 1;
+  axis.beta1 = 1;
+  EXPECT_EQ(topologyMismatchWarning(axis, plate, 3.5), "");
+  axis.beta0 = 6;
+  const std::string islands = topologyMismatchWarning(axis, plate, 3.5);
+  EXPECT_NE(islands.find("the axis has beta0,beta1 6,1 where the solid has 1,1"), std::string::npos) << islands;
+  EXPECT_NE(islands.find("--spacing 1.75 or finer"), std::string::npos) << islands;
+  axis.beta0 = 1;
+  axis.beta1 = 3;
+  EXPECT_NE(topologyMismatchWarning(axis, plate, 3.5).find("beta0,beta1 1,3 where the solid has 1,1"),
+            std::string::npos);
+  axis.beta1 = -1;  // unknown: β0 matches, so nothing to say
+  EXPECT_EQ(topologyMismatchWarning(axis, plate, 3.5), "");
+  axis.beta0 = 2;
+  EXPECT_NE(topologyMismatchWarning(axis, plate, 3.5).find("the axis has beta0 2 where the solid has 1"),
+            std::string::npos);
 }
 
 INSTANTIATE_TEST_SUITE_P(Plates, SmallHole,
