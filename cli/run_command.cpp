@@ -109,11 +109,8 @@ int runRunCommand(const RunCommandOptions& options) {
     // preparation), so their sum is more.
     const double seconds = secondsRead + secondsSince(solidStart);
     summary["seconds"]["end_to_end"] = seconds;
-    const SolidBetti solidBetti = solidBettiNumbers(model.solids[i]);
-    summary["topology"]["solid"] = {
-        {"beta0", solidBetti.beta0}, {"beta1", solidBetti.beta1}, {"beta2", solidBetti.beta2}};
-    const std::string topologyWarning = topologyMismatchWarning(medial.topology, solidBetti, sampled.samples.spacing);
-    summary["topology"]["warning"] = topologyWarning;
+    const std::string topologyWarning =
+        recordSolidTopology(summary, model.solids[i], medial.topology, sampled.samples.spacing);
     writeFileAtomically(dir + "/summary.json", [&](std::ofstream& out) { out << summary.dump(2) << "\n"; });
 
     char betti[32];

@@ -24,4 +24,13 @@ std::string topologyMismatchWarning(const ComplexTopology& axis, const SolidBett
   return line;
 }
 
+std::string recordSolidTopology(nlohmann::json& summary, const TopoDS_Shape& solid, const ComplexTopology& axis,
+                                double spacing) {
+  const SolidBetti betti = solidBettiNumbers(solid);
+  summary["topology"]["solid"] = {{"beta0", betti.beta0}, {"beta1", betti.beta1}, {"beta2", betti.beta2}};
+  std::string warning = topologyMismatchWarning(axis, betti, spacing);
+  summary["topology"]["warning"] = warning;
+  return warning;
+}
+
 }  // namespace cadmedial

@@ -38,6 +38,7 @@
 #include "atomic_file.hpp"
 #include "eval_command.hpp"
 #include "medial_mesh_conversion.hpp"
+#include "topology_check.hpp"
 #include "cadmedial/brep_io.hpp"
 #include "cadmedial/errors.hpp"
 #include "cadmedial/sampling.hpp"
@@ -251,6 +252,7 @@ py::list compute(const std::string& source, double spacing, double theta, double
     // As `cadmedial run`'s summary: from the read to this solid's result,
     // all samplings included (a pair-mesh may sample the solid again).
     summary["seconds"]["end_to_end"] = runs[i].secondsRead + runs[i].secondsSolid;
+    const std::string topologyWarning = recordSolidTopology(summary, input.solids[i], m.topology, s.samples.spacing);
 
     py::dict d;
     d["solid"] = i;
@@ -268,6 +270,7 @@ py::list compute(const std::string& source, double spacing, double theta, double
     d["seconds"] = seconds;
     std::vector<std::string> warnings = input.warnings;
     warnings.insert(warnings.end(), s.report.warnings.begin(), s.report.warnings.end());
+    if (!topologyWarning.empty()) warnings.push_back(topologyWarning);
     d["warnings"] = toList(warnings);
     if (run.pairMesh) {
       d["pair_mesh"] = pairMeshToDict(*run.pairMesh);
