@@ -38,15 +38,31 @@ SolidResult attempt(const TopoDS_Shape& solid, const SamplingParams& sampling, c
     return run;
   }
   call(stage, "medial");
-  InsideOracle oracle;
+  // Both called serially (one classifier). A point OCCT fails on counts as
+  // inside: the diagnostic then reports a disagreement, the relabel keeps the
+  // facet (its rule before the exact side was asked).
   BRepClass3d_SolidClassifier classifier(solid);
-  const InsideOracle exactInside = [&classifier](const Vec3& p) {
-    classifier.Perform(gp_Pnt(p[0], p[1], p[2]), 1e-9);
-    return classifier.State() == TopAbs_IN;
+  auto stateOf = [&classifier](const Vec3& p, double tolerance) {
+    try {
+      classifier.Perform(gp_Pnt(p[0], p[1], p[2]), tolerance);
+      return classifier.State();
+    } catch (const Standard_Failure&) {
+      return TopAbs_UNKNOWN;
+    }
   };
-  if (withOracle) oracle = exactInside;
+  InsideOracle oracle;
+  if (withOracle)
+    oracle = [&stateOf](const Vec3& p) {
+      const TopAbs_State state = stateOf(p, 1e-9);
+      return state == TopAbs_IN || state == TopAbs_UNKNOWN;
+    };
   const SampleSet& samples = triangulated.sampled.samples;
-  run.medial = computeCadMedial(*triangulated.triangulation, samples, *triangulated.prepared, params, oracle, exactInside);
+  // Outside only when clearly so: a centroid on the surface (within 1e-3 h)
+  // keeps its facet.
+  const double onSurface = 1e-3 * samples.spacing;
+  const InsideOracle notOutside = [&stateOf, onSurface](const Vec3& p) { return stateOf(p, onSurface) != TopAbs_OUT; };
+  run.medial =
+      computeCadMedial(*triangulated.triangulation, samples, *triangulated.prepared, params, oracle, notOutside);
   run.secondsAxis = secondsSince(start);
   if (pairMesh) {
     call(stage, "pair_mesh");

@@ -18,8 +18,8 @@ std::string topologyMismatchWarning(const ComplexTopology& axis, const SolidBett
   }
   char line[320];
   std::snprintf(line, sizeof line,
-                "the axis has %s %s where the solid has %s: a feature is finer than the spacing %.3g resolves (a "
-                "small hole, a thin wall, a nearly flat edge); --spacing %.3g or finer may resolve it",
+                "the axis has %s %s where the solid has %s: a feature is finer than the spacing %.4g resolves (a "
+                "small hole, a thin wall, a nearly flat edge); a spacing of %.4g or finer may resolve it",
                 beta1Known ? "beta0,beta1" : "beta0", axisBetti, solidBetti, spacing, spacing / 2);
   return line;
 }

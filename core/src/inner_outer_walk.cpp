@@ -123,16 +123,16 @@ InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& 
   if (params.innerNeedsInsideVertices && !cellSide.empty())
     for (Index f = 0; f < nf; ++f) {
       if (out.facetOuter[f]) continue;
-      bool near = true;
+      bool allNear = true;
       for (const Index* it = selected.ringBegin(f); it != selected.ringEnd(f); ++it) {
         if (cellSide[*it] == kCellOutside) {
           out.facetOuter[f] = 1;
           ++out.innerFacetsOutsideSurface;
           break;
         }
-        near = near && cellSide[*it] == kCellNearOutside;
+        allNear = allNear && cellSide[*it] == kCellNearOutside;
       }
-      if (!out.facetOuter[f] && near && exactSideNearSurface &&
+      if (!out.facetOuter[f] && allNear && exactSideNearSurface &&
           !exactSideNearSurface(facetCentroid(dv, selected, f))) {
         out.facetOuter[f] = 1;
         ++out.nearFacetsOutsideExactly;

@@ -54,8 +54,8 @@ struct InnerOuterLabels {
   std::size_t blockedCrossingsToInner = 0;  // ... whose target facet stayed inner
   std::size_t innerFacetsOutsideSurface = 0;  // not reached by the walk, relabelled outer: a Voronoi
                                               // vertex clearly outside the sampled surface
-  std::size_t nearFacetsOutsideExactly = 0;   // not reached, a vertex within the band outside, and the
-                                              // centroid outside the exact solid (exactSideNearSurface)
+  std::size_t nearFacetsOutsideExactly = 0;   // not reached, every vertex within the band outside, and
+                                              // the centroid outside the exact solid (exactSideNearSurface)
   std::size_t outerCornerTriangles = 0;   // corner triangles hanging on an outer facet
   std::size_t outerConvexTriangles = 0;   // convex-edge (fan) triangles hanging on an outer facet
   // Independent check with the inside oracle (0 when no oracle was given):
@@ -74,9 +74,11 @@ struct InnerOuterLabels {
 // empty = no restriction on the walk and no relabelling. The walk never crosses
 // a Voronoi edge with an end inside; with params.innerNeedsInsideVertices a
 // facet it did not reach is still outer when one of its Voronoi vertices is
-// clearly outside (kCellOutside), or, given exactSideNearSurface (true
-// inside the exact solid), when one is outside within the band
-// (kCellNearOutside) and the facet's centroid is outside the exact solid.
+// clearly outside (kCellOutside), or, given exactSideNearSurface (false
+// where a point is clearly outside the exact solid; called serially), when
+// every one is outside within the band (kCellNearOutside) and the facet's
+// centroid is outside the exact solid. `oracle`'s check of such a facet is
+// then no independent check: it asks the same solid at the same centroid.
 InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& samples,
                                     const SelectedFacets& selected, const ForcedTriangles& forced,
                                     const MedialParams& params, const InsideOracle& oracle = {},

@@ -47,7 +47,7 @@ struct MedialCounts {
   std::size_t walkBlockedCrossings = 0;
   std::size_t walkSurfaceCrossingsRefused = 0;  // crossings refused: a Voronoi vertex inside the surface
   std::size_t innerFacetsOutsideSurface = 0;    // unreached facets relabelled outer (a vertex outside)
-  std::size_t nearFacetsOutsideExactly = 0;     // ... (a vertex near outside, the centroid outside exactly)
+  std::size_t nearFacetsOutsideExactly = 0;     // ... (every vertex near outside, the centroid outside exactly)
   std::size_t singleFacetHolesFilled = 0;       // unselected facets closing a one-facet hole
   std::size_t fringePolygonsThinned = 0;        // fringe facets collapsed (thinFringe)
   std::size_t subResolutionIslands = 0;         // components dropped (all radii < islandRadiusFraction h)
