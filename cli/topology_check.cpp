@@ -1,6 +1,5 @@
 #include "topology_check.hpp"
 
-#include <cmath>
 #include <cstdio>
 
 namespace cadmedial {

@@ -16,6 +16,7 @@
 // OCCT after CGAL (OCCT's Handle macro).
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <gp_Vec.hxx>
 
@@ -120,6 +121,35 @@ INSTANTIATE_TEST_SUITE_P(Angles, KnifeEdge, ::testing::Values(5.0, 8.0, 20.0),
                          [](const ::testing::TestParamInfo<double>& info) {
                            return std::to_string(static_cast<int>(info.param)) + "deg";
                          });
+
+// The exact side must leave alone inner facets whose vertices poke out of
+// the solid: by a knife edge (the wedge of 8°) they lie a little outside
+// the solid, in the band (inner_outer_walk.cpp; test_small_holes.cpp for
+// the facets the exact side is there to relabel). Asking it for facets with
+// one vertex in the band, not all, relabelled 5 here and made a loop (6 and
+// 2 loops on the robustness part sharp_wedge).
+TEST(KnifeEdgeExactSide, TheExactSideLeavesTheSheetAlone) {
+  const TopoDS_Shape wedge8 = wedge(8);
+  const SolidSampling s = sampleSolid(wedge8);
+  const DelaunayVoronoi dv(s.samples.points);
+  const PreparedSamples prepared(s.samples);
+  BRepClass3d_SolidClassifier classifier(wedge8);
+  const double onSurface = 1e-3 * s.samples.spacing;
+  std::size_t asked = 0;
+  const InsideOracle notOutside = [&](const Vec3& p) {
+    ++asked;
+    classifier.Perform(gp_Pnt(p[0], p[1], p[2]), onSurface);
+    return classifier.State() != TopAbs_OUT;
+  };
+  const MedialResult with = computeCadMedial(dv, s.samples, prepared, MedialParams::cad(), {}, notOutside);
+  const MedialResult without = computeCadMedial(dv, s.samples, prepared, MedialParams::cad());
+  std::printf("wedge 8 deg: %zu polygons, %zu facets asked, %zu relabelled; b0,b1 %lld,%lld\n", with.polygonCount(),
+              asked, with.counts.nearFacetsOutsideExactly, with.topology.beta0, with.topology.beta1);
+  EXPECT_EQ(with.counts.nearFacetsOutsideExactly, 0u);
+  EXPECT_EQ(with.polygonVertices, without.polygonVertices);
+  EXPECT_EQ(with.topology.beta0, 1);
+  EXPECT_EQ(with.topology.beta1, 0);
+}
 
 }  // namespace
 }  // namespace cadmedial

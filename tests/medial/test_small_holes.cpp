@@ -18,10 +18,6 @@
 #include "cadmedial/medial.hpp"
 // OCCT after CGAL (OCCT's Handle macro).
 #include <BRepAlgoAPI_Cut.hxx>
-#include <BRepBuilderAPI_MakeFace.hxx>
-#include <BRepBuilderAPI_MakePolygon.hxx>
-#include <BRepClass3d_SolidClassifier.hxx>
-#include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <TopExp_Explorer.hxx>
@@ -87,6 +83,14 @@ TEST_P(SmallHole, TheAxisGoesRoundTheHoleAndNotIntoIt) {
   EXPECT_EQ(topologyMismatchWarning(m.topology, solidBettiNumbers(solid), run.sampled.samples.spacing), "");
 }
 
+INSTANTIATE_TEST_SUITE_P(Plates, SmallHole,
+                         ::testing::Values(std::make_tuple(200.0, 2.0, false), std::make_tuple(150.0, 1.5, false),
+                                           std::make_tuple(120.0, 1.0, true)),
+                         [](const ::testing::TestParamInfo<std::tuple<double, double, bool>>& info) {
+                           return "plate_" + std::to_string(static_cast<int>(std::get<0>(info.param))) + "_hole_" +
+                                  std::to_string(static_cast<int>(std::get<1>(info.param) * 10)) + "_tenths";
+                         });
+
 // `cadmedial run` warns when the axis's β0, β1 differ from the solid's
 // (β1 of a complex too large for the exact rank is -1: then β0 alone).
 TEST(TopologyCheck, AnAxisWhoseTopologyDiffersFromTheSolidsIsWarnedAbout) {
@@ -115,45 +119,6 @@ TEST(TopologyCheck, AnAxisWhoseTopologyDiffersFromTheSolidsIsWarnedAbout) {
   axis.beta1 = 4;
   EXPECT_EQ(topologyMismatchWarning(axis, unknown, 3.5), "");
 }
-
-// The exact side must leave alone inner facets whose vertices poke out of
-// the solid: by a knife edge (a wedge of 8°, as test_knife_edge.cpp) they
-// lie a little outside the solid, in the band. Asking it for facets with
-// one vertex in the band, not all, removed 6 of them and made 2 loops.
-TEST(SmallHole, TheExactSideLeavesAKnifeEdgesSheetAlone) {
-  constexpr double length = 60, height = 30, angle = 8 * M_PI / 180;
-  BRepBuilderAPI_MakePolygon profile(gp_Pnt(0, 0, 0), gp_Pnt(length, 0, 0),
-                                     gp_Pnt(length, length * std::tan(angle), 0), true);
-  const TopoDS_Shape wedge =
-      BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(profile.Wire()).Face(), gp_Vec(0, 0, height)).Shape();
-  const SolidSampling s = sampleSolid(wedge);
-  const DelaunayVoronoi dv(s.samples.points);
-  const PreparedSamples prepared(s.samples);
-  BRepClass3d_SolidClassifier classifier(wedge);
-  const double onSurface = 1e-3 * s.samples.spacing;
-  std::size_t asked = 0;
-  const InsideOracle notOutside = [&](const Vec3& p) {
-    ++asked;
-    classifier.Perform(gp_Pnt(p[0], p[1], p[2]), onSurface);
-    return classifier.State() != TopAbs_OUT;
-  };
-  const MedialResult with = computeCadMedial(dv, s.samples, prepared, MedialParams::cad(), {}, notOutside);
-  const MedialResult without = computeCadMedial(dv, s.samples, prepared, MedialParams::cad());
-  std::printf("wedge 8 deg: %zu polygons, %zu facets asked, %zu relabelled; b0,b1 %lld,%lld\n", with.polygonCount(),
-              asked, with.counts.nearFacetsOutsideExactly, with.topology.beta0, with.topology.beta1);
-  EXPECT_EQ(with.counts.nearFacetsOutsideExactly, 0u);
-  EXPECT_EQ(with.polygonVertices, without.polygonVertices);
-  EXPECT_EQ(with.topology.beta0, 1);
-  EXPECT_EQ(with.topology.beta1, 0);
-}
-
-INSTANTIATE_TEST_SUITE_P(Plates, SmallHole,
-                         ::testing::Values(std::make_tuple(200.0, 2.0, false), std::make_tuple(150.0, 1.5, false),
-                                           std::make_tuple(120.0, 1.0, true)),
-                         [](const ::testing::TestParamInfo<std::tuple<double, double, bool>>& info) {
-                           return "plate_" + std::to_string(static_cast<int>(std::get<0>(info.param))) + "_hole_" +
-                                  std::to_string(static_cast<int>(std::get<1>(info.param) * 10)) + "_tenths";
-                         });
 
 }  // namespace
 }  // namespace cadmedial
