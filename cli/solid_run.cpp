@@ -8,6 +8,8 @@
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <Standard_Failure.hxx>
 
+#include "cadmedial/exact_oracle.hpp"
+
 namespace cadmedial {
 
 namespace {
@@ -51,11 +53,17 @@ SolidResult attempt(const TopoDS_Shape& solid, const SamplingParams& sampling, c
     }
   };
   InsideOracle oracle;
-  if (withOracle)
-    oracle = [&stateOf](const Vec3& p) {
-      const TopAbs_State state = stateOf(p, 1e-9);
-      return state == TopAbs_IN || state == TopAbs_UNKNOWN;
+  std::optional<ExactOracle> exact;
+  if (withOracle) {
+    exact.emplace(solid);
+    oracle = [&exact](const Vec3& p) {
+      try {
+        return exact->inside(gp_Pnt(p[0], p[1], p[2]), 1e-9);
+      } catch (...) {
+        return true;
+      }
     };
+  }
   const SampleSet& samples = triangulated.sampled.samples;
   // Outside only when clearly so: a centroid on the surface (within 1e-3 h)
   // keeps its facet.
