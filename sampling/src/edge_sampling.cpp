@@ -9,13 +9,13 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepLProp_CLProps.hxx>
-#include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopoDS.hxx>
 
 #include "face_spacing_field.hpp"
+#include "face_uv_classifier.hpp"
 #include "narrow_faces.hpp"
 #include "sampling_context.hpp"
 
@@ -391,7 +391,7 @@ gp_Pnt2d uvStep(const BRepAdaptor_Surface& surf, const gp_Pnt2d& uv, const gp_Ve
 struct LadderSide {
   const BRepAdaptor_Surface* surf;
   int face;
-  BRepTopAdaptor_FClass2d* classifier;
+  FaceUVClassifier* classifier;
   gp_Vec tangent;
   gp_Pnt2d uv;   // last rung's (the leg's to start)
   gp_Pnt point;  // last rung's
@@ -445,10 +445,10 @@ std::size_t placeRungs(SamplingContext& ctx, SampleBuilder& builder, Ladder& lad
 void placeTriplets(SamplingContext& ctx, SampleBuilder& builder) {
   const SolidTopology& topo = ctx.topo;
   SampleSet& set = builder.set();
-  std::map<int, std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers;
-  auto classifier = [&](int f) -> BRepTopAdaptor_FClass2d& {
+  std::map<int, std::unique_ptr<FaceUVClassifier>> classifiers;
+  auto classifier = [&](int f) -> FaceUVClassifier& {
     auto& slot = classifiers[f];
-    if (!slot) slot = std::make_unique<BRepTopAdaptor_FClass2d>(topo.face(f), 1e-9);
+    if (!slot) slot = std::make_unique<FaceUVClassifier>(topo.face(f), 1e-9);
     return *slot;
   };
   std::map<int, std::unique_ptr<BRepAdaptor_Surface>> surfaces;  // the ladders' (kept past their edge)

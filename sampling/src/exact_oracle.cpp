@@ -16,7 +16,6 @@
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
-#include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <Extrema_ExtPC.hxx>
@@ -28,6 +27,7 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
+#include "face_uv_classifier.hpp"
 #include "feature_classification.hpp"
 #include "solid_topology.hpp"
 
@@ -210,7 +210,7 @@ struct FaceSolver {
   BRepAdaptor_Surface surface;
   Extrema_ExtPS extrema;
   Extrema_GenLocateExtPS locate;  // holds a reference to `surface`
-  BRepTopAdaptor_FClass2d uvClassifier;
+  FaceUVClassifier uvClassifier;
   bool hasSeam = false;
   // Plane, cylinder, cone, sphere, torus: Extrema_ExtPS solves these in
   // closed form. On the others (B-spline, Bézier, offset, swept) it searches

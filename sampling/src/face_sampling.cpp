@@ -11,9 +11,9 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
-#include <BRepTopAdaptor_FClass2d.hxx>
 #include <GProp_GProps.hxx>
 
+#include "face_uv_classifier.hpp"
 #include "sampling_context.hpp"
 
 namespace cadmedial {
@@ -136,7 +136,7 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
     const double totalDarts = std::floor(std::min(
         kMaxDarts, kDartsPerDisk * area / (smallestRadius * smallestRadius) * (weightSum / static_cast<double>(tiles))));
 
-    BRepTopAdaptor_FClass2d classifier(face, 1e-9);
+    FaceUVClassifier classifier(face, 1e-9);
     std::mt19937_64 rng(seed * 1000003ull + static_cast<unsigned>(f));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     double weightBefore = 0, dartsBefore = 0;

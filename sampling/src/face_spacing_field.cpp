@@ -6,9 +6,9 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepLProp_SLProps.hxx>
 #include <BRepTools.hxx>
-#include <BRepTopAdaptor_FClass2d.hxx>
 #include <gp_Lin.hxx>
 
+#include "face_uv_classifier.hpp"
 #include "solid_topology.hpp"
 
 namespace cadmedial {
@@ -65,7 +65,7 @@ class ThicknessProber {
   const TopoDS_Face& face_;
   const BRepAdaptor_Surface& surf_;
   IntCurvesFace_ShapeIntersector& rays_;
-  BRepTopAdaptor_FClass2d inFace_;
+  FaceUVClassifier inFace_;
   double floor_, cap_;
   double fraction_;  // of the thickness
 };

@@ -8,13 +8,14 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
-#include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <Geom_Curve.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopoDS.hxx>
+
+#include "face_uv_classifier.hpp"
 
 namespace cadmedial {
 
@@ -86,7 +87,7 @@ std::vector<EdgeFeature> classifyEdges(const SolidTopology& topo, double smoothA
 namespace {
 
 // Rays from vertex v into face f: points of the face on a small loop around v.
-void addFaceRays(const TopoDS_Vertex& vertex, const TopoDS_Face& face, BRepTopAdaptor_FClass2d& classifier,
+void addFaceRays(const TopoDS_Vertex& vertex, const TopoDS_Face& face, const FaceUVClassifier& classifier,
                  double radius3d, std::vector<gp_Vec>& rays) {
   gp_Pnt2d uv = BRep_Tool::Parameters(vertex, face);
   BRepAdaptor_Surface surf(face, false);
@@ -146,10 +147,10 @@ std::vector<VertexFeature> classifyVertices(const SolidTopology& topo, const std
 
   TopTools_IndexedDataMapOfShapeListOfShape vertexToFaces;
   TopExp::MapShapesAndUniqueAncestors(topo.solid, TopAbs_VERTEX, TopAbs_FACE, vertexToFaces);
-  std::map<int, std::unique_ptr<BRepTopAdaptor_FClass2d>> faceClassifiers;
-  auto faceClassifier = [&](int f) -> BRepTopAdaptor_FClass2d& {
+  std::map<int, std::unique_ptr<FaceUVClassifier>> faceClassifiers;
+  auto faceClassifier = [&](int f) -> FaceUVClassifier& {
     auto& slot = faceClassifiers[f];
-    if (!slot) slot = std::make_unique<BRepTopAdaptor_FClass2d>(topo.face(f), 1e-9);
+    if (!slot) slot = std::make_unique<FaceUVClassifier>(topo.face(f), 1e-9);
     return *slot;
   };
   std::unique_ptr<BRepClass3d_SolidClassifier> solidClassifier;

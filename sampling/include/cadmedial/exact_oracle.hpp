@@ -1,14 +1,15 @@
 // Exact distance to a B-rep solid and exact inside test: the reference that
 // evaluation (DESIGN.md §6) measures medial axes against.
 //
-// A fine BRepMesh triangulation in a CGAL AABB tree only *selects* candidate
-// faces (those whose mesh distance is within a few mesh deflections of the
-// best); the distance itself is computed on the exact OCCT geometry of those
-// faces: all extrema on the surface (Extrema_ExtPS) kept if their UV lies in
-// the face (BRepTopAdaptor_FClass2d), a Newton projection started from the
-// mesh foot point (catches the degenerate cases where the analytic solver
-// gives up, e.g. a point on a torus' core circle), and the minima on the
-// face's edges and vertices for feet on the face boundary.
+// A fine BRepMesh triangulation in a bounding-volume tree only *selects*
+// candidate faces (those whose mesh distance is within a few mesh deflections
+// of the best); the distance itself is computed on the exact OCCT geometry of
+// those faces: all extrema on the surface (Extrema_ExtPS) kept if their UV
+// lies in the face (FaceUVClassifier: FClass2d, split per hole), a Newton
+// projection started from the mesh foot point (catches the degenerate cases
+// where the analytic solver gives up, e.g. a point on a torus' core circle),
+// and the minima on the face's edges and vertices for feet on the face
+// boundary.
 #pragma once
 
 #include <memory>
