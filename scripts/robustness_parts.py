@@ -19,8 +19,10 @@ sharp_wedge (knife-edge rungs and the weld of coincident Voronoi vertices),
 small_step (narrow faces); still open (2026-12-03): shallow convex edges on
 loft_circle_square and box_fillet_variable, two contacts on box_fillet_all.
 The second sweep (2026-12-04, chamfer_block and after): 16 of 17 evaluated
-parts PASS; steinmetz fails edges (88 %); hole_grid's eval did not finish in
-15 min (ARCHITECTURE.md, Known gaps).
+parts PASS; steinmetz fails edges (88 %: shallow convex edges, where its
+edges turn tangent); hole_grid's eval did not finish in 15 min, and PASSes
+in 83 s since the point-in-face test asks one hole (2026-12-05;
+ARCHITECTURE.md, Known gaps).
 """
 import math
 import os
