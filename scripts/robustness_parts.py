@@ -22,7 +22,7 @@ The second sweep (2026-12-04, chamfer_block and after): 16 of 17 evaluated
 parts PASS; steinmetz fails edges (88 %: shallow convex edges, where its
 edges turn tangent); hole_grid's eval did not finish in 15 min, and PASSes
 in 83 s since the point-in-face test asks one hole (2026-12-05;
-ARCHITECTURE.md, Known gaps).
+ARCHITECTURE.md, Known gaps). perforated_tube (2026-12-05): PASS.
 """
 import math
 import os
@@ -179,6 +179,17 @@ def cross_drilled():
     return c.cut(Part.makeCylinder(3, 40, V(-20, 0, 30), V(1, 0, 0)))
 
 
+def perforated_tube():
+    """A tube (R 20, wall 4) with 48 radial holes r 2: faces periodic in u with many holes."""
+    tube = Part.makeCylinder(20, 80).cut(Part.makeCylinder(16, 90, V(0, 0, -5)))
+    holes = []
+    for k in range(8):
+        for j in range(6):
+            a = 2 * math.pi * (k + 0.5 * (j % 2)) / 8
+            holes.append(Part.makeCylinder(2, 30, V(0, 0, 12 + 11 * j), V(math.cos(a), math.sin(a), 0)))
+    return tube.cut(Part.makeCompound(holes))
+
+
 PARTS = {
     "sphere": lambda: Part.makeSphere(25),
     "cone_apex": lambda: Part.makeCone(20, 0, 50),
@@ -219,6 +230,7 @@ PARTS = {
     "hole_grid": hole_grid,
     "cross_drilled": cross_drilled,
     "reversed_box": lambda: Part.makeBox(30, 20, 10).reversed(),
+    "perforated_tube": perforated_tube,
 }
 
 
