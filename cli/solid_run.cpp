@@ -2,8 +2,11 @@
 
 #include <chrono>
 #include <cstdio>
+#include <mutex>
 #include <optional>
 #include <string>
+
+#include <tbb/enumerable_thread_specific.h>
 
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <Standard_Failure.hxx>
@@ -40,10 +43,12 @@ SolidResult attempt(const TopoDS_Shape& solid, const SamplingParams& sampling, c
     return run;
   }
   call(stage, "medial");
-  // Both called serially (one classifier). A point OCCT fails on counts as
-  // inside: the diagnostic then reports a disagreement, the relabel keeps the
-  // facet (its rule before the exact side was asked).
+  // One classifier: the relabel (exactSideNearSurface) calls it from one
+  // thread; the check's fallback below takes a lock. A point OCCT fails on
+  // counts as inside: the diagnostic then reports a disagreement, the
+  // relabel keeps the facet (its rule before the exact side was asked).
   BRepClass3d_SolidClassifier classifier(solid);
+  std::mutex classifierLock;
   auto stateOf = [&classifier](const Vec3& p, double tolerance) {
     try {
       classifier.Perform(gp_Pnt(p[0], p[1], p[2]), tolerance);
@@ -56,21 +61,26 @@ SolidResult attempt(const TopoDS_Shape& solid, const SamplingParams& sampling, c
   // The check asks ExactOracle (the evaluation's inside test: the normal at
   // the nearest point, the classifier only at edges and vertices): OCCT's
   // classifier at every centroid cost 10-100 times the axis on curved
-  // parts. Should the oracle's mesh fail, the classifier answers alone.
+  // parts. The walk calls it from several threads: one copy per thread (the
+  // copies share the meshes and boxes, medial_evaluation does the same).
+  // Should the oracle's mesh fail, the classifier answers alone.
   std::optional<ExactOracle> exact;
+  std::optional<tbb::enumerable_thread_specific<ExactOracle>> exactPerThread;
   if (withOracle) {
     try {
       exact.emplace(solid);
+      exactPerThread.emplace(*exact);
     } catch (...) {
       exact.reset();
     }
-    oracle = [&exact, &stateOf](const Vec3& p) {
+    oracle = [&exact, &exactPerThread, &stateOf, &classifierLock](const Vec3& p) {
       if (!exact) {
+        const std::lock_guard<std::mutex> hold(classifierLock);
         const TopAbs_State state = stateOf(p, 1e-9);
         return state == TopAbs_IN || state == TopAbs_UNKNOWN;
       }
       try {
-        return exact->inside(gp_Pnt(p[0], p[1], p[2]), 1e-9);
+        return exactPerThread->local().inside(gp_Pnt(p[0], p[1], p[2]), 1e-9);
       } catch (...) {
         return true;  // as a point the classifier fails on
       }

@@ -1,4 +1,8 @@
+#include <cstdint>
 #include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "cadmedial/cell_sides.hpp"
 #include "cadmedial/inner_outer.hpp"
@@ -176,13 +180,31 @@ InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& 
     // the box can fall a rounding step outside it.
     const double pad = 1e-6 * samples.bboxDiagonal();
     auto beyondSolid = [&](Index cell) { return beyondSampledSolid(dv, samples, cell, pad); };
+    // The oracle's answers in parallel (an exact query costs 10-100 µs;
+    // the oracle is safe to call concurrently, medial_params.hpp), the
+    // counts after, in order.
+    std::vector<std::uint8_t> facetInside(nf, 0), forcedInside(forced.triangles.size(), 0);
+    tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 256), [&](const tbb::blocked_range<Index>& r) {
+      for (Index f = r.begin(); f != r.end(); ++f) {
+        if (selected.unbounded[f]) continue;
+        bool far = false;
+        for (const Index* it = selected.ringBegin(f); it != selected.ringEnd(f) && !far; ++it)
+          far = beyondSolid(*it);
+        facetInside[f] = !far && oracle(facetCentroid(dv, selected, f));
+      }
+    });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, forced.triangles.size(), 256),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                          bool far = false;
+                          for (Index v : forced.triangles[i].cells) far = far || (v != kNoIndex && beyondSolid(v));
+                          forcedInside[i] = !far && oracle(forcedCentroid(dv, samples, forced.triangles[i]));
+                        }
+                      });
     for (Index f = 0; f < nf; ++f) {
       if (selected.unbounded[f]) continue;
       ++out.oracleFacetsChecked;
-      bool far = false;
-      for (const Index* it = selected.ringBegin(f); it != selected.ringEnd(f) && !far; ++it)
-        far = beyondSolid(*it);
-      const bool inside = !far && oracle(facetCentroid(dv, selected, f));
+      const bool inside = facetInside[f] != 0;
       const bool inner = !out.facetOuter[f];
       if (inside != inner) {
         ++out.oracleFacetDisagreements;
@@ -191,10 +213,7 @@ InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& 
     }
     for (std::size_t i = 0; i < forced.triangles.size(); ++i) {
       ++out.oracleForcedChecked;
-      bool far = false;
-      for (Index v : forced.triangles[i].cells) far = far || (v != kNoIndex && beyondSolid(v));
-      const bool inside = !far && oracle(forcedCentroid(dv, samples, forced.triangles[i]));
-      if (inside == (out.forcedOuter[i] != 0)) ++out.oracleForcedDisagreements;
+      if ((forcedInside[i] != 0) == (out.forcedOuter[i] != 0)) ++out.oracleForcedDisagreements;
     }
     out.oracleSeconds = ow.seconds();
   }

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <mutex>
 
 #include "cadmedial/medial.hpp"
 // OCCT after CGAL (OCCT's Handle macro).
@@ -26,9 +27,11 @@ Computed compute(const std::string& name, bool withOracle) {
   const LoadedModel model = loadModel(test::bundledPath(test::bundledModel(name)));
   Computed c{sampleSolid(model.solids[0]), {}};
   BRepClass3d_SolidClassifier classifier(model.solids[0]);
+  std::mutex lock;  // the walk's check calls the oracle from several threads
   InsideOracle oracle;
   if (withOracle)
-    oracle = [&classifier](const Vec3& p) {
+    oracle = [&classifier, &lock](const Vec3& p) {
+      const std::lock_guard<std::mutex> hold(lock);
       classifier.Perform(gp_Pnt(p[0], p[1], p[2]), 1e-9);
       return classifier.State() == TopAbs_IN;
     };

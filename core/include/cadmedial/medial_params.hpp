@@ -92,8 +92,10 @@ struct MedialParams {
   }
 };
 
-// Exact inside test of the solid (sampling/ wraps an OCCT classifier). Used
-// only to count disagreements with the walk, never to decide a label.
+// Exact inside test of the solid (sampling/ wraps an OCCT classifier). As
+// the walk's check (`oracle`) it only counts disagreements, never decides a
+// label, and is called from several threads at once: it must be safe to.
+// (exactSideNearSurface, of the same type, is called from one thread.)
 using InsideOracle = std::function<bool(const Vec3&)>;
 
 }  // namespace cadmedial
