@@ -20,6 +20,7 @@
 #include <Bnd_Box.hxx>
 #include <Extrema_ExtPC.hxx>
 #include <Extrema_ExtPS.hxx>
+#include <Geom2d_Curve.hxx>
 #include <GeomAbs_SurfaceType.hxx>
 #include <Extrema_GenLocateExtPS.hxx>
 #include <Poly_Triangulation.hxx>
@@ -192,6 +193,9 @@ struct ExactOracle::Shared {
   // material narrower than a half-space there, so p is outside (concave:
   // inside), without looking at any normal.
   std::vector<int> edgeSide;
+  // Per edge: the surface is smooth across it (a seam, or the tangent edge
+  // of a fillet): a closest point inside it has the normal of either face.
+  std::vector<bool> edgeSmooth;
   std::vector<bool> faceMeshed;
   std::vector<Triangle> triangles;                   // mesh
   std::vector<int> triangleFace;                     // per triangle
@@ -288,6 +292,7 @@ struct ExactOracle::Workspace {
   std::vector<std::unique_ptr<FaceSolver>> faces;
   std::vector<std::unique_ptr<EdgeSolver>> edges;
   std::unique_ptr<BRepClass3d_SolidClassifier> classifier;
+  std::size_t classifierQueries = 0;
   // Per-query marks (a stamp instead of clearing arrays every query).
   std::uint32_t stamp = 0;
   std::vector<std::uint32_t> faceStamp, edgeStamp, vertexStamp;
@@ -303,6 +308,10 @@ struct ExactOracle::Workspace {
   double bestU = 0, bestV = 0;
   // ... or when it is inside a sharp edge: +1 convex (p is outside), -1 concave (inside), 0 unknown.
   int bestEdgeSide = 0;
+  // ... or when it is inside a smooth edge (edgeSmooth): the edge, and the
+  // point's parameter on it.
+  int bestSmoothEdge = -1;
+  double bestT = 0;
 };
 
 ExactOracle::ExactOracle(const TopoDS_Shape& solid, const ExactOracleParams& params) {
@@ -372,9 +381,12 @@ ExactOracle::ExactOracle(const TopoDS_Shape& solid, const ExactOracleParams& par
 
   const std::vector<EdgeFeature> features = classifyEdges(topo, 1.0);
   s.edgeSide.assign(ne, 0);
+  s.edgeSmooth.assign(ne, false);
   for (int e = 0; e < ne; ++e) {
     const EdgeFeature& f = features[e];
-    if (f.seam || f.free || f.mixedSign || topo.edgeDegenerate[e]) continue;
+    if (f.free || f.mixedSign || topo.edgeDegenerate[e]) continue;
+    s.edgeSmooth[e] = f.seam || f.kind == EdgeKind::Smooth;
+    if (f.seam) continue;
     s.edgeSide[e] = f.kind == EdgeKind::Convex ? 1 : f.kind == EdgeKind::Concave ? -1 : 0;
   }
 
@@ -433,30 +445,54 @@ int ExactOracle::unmeshedFaces() const {
 const TopoDS_Shape& ExactOracle::solid() const { return shared_->solid; }
 
 bool ExactOracle::inside(const gp_Pnt& p, double onTolerance, double* distance) {
-  // Fast path: when the closest point is a smooth point of a face, p − foot is
-  // along the face normal there, and its sign is the answer (the classifier
+  // Fast path: when the closest point is a smooth point of the surface
+  // (inside a face, or inside a seam or a tangent edge), p − foot is along
+  // the surface normal there, and its sign is the answer (the classifier
   // costs 10-100 times a distance query on parts with many faces).
   const BoundaryPoint foot = closestPoint(p);
   if (distance) *distance = foot.distance;
   if (foot.distance <= onTolerance) return true;
   Workspace& w = *work_;
+  const Shared& s = *shared_;
   if (w.bestEdgeSide != 0) return w.bestEdgeSide < 0;
-  if (w.bestFace >= 0) {
+  // -1 inside, +1 outside, 0 when p − S(u, v) is not clearly along face f's
+  // normal there (S(u, v) is the foot, or as near as it).
+  auto sideByNormal = [&](int f, double u, double v) {
+    if (!w.faces[f]) w.faces[f] = std::make_unique<FaceSolver>(s.topo.face(f));
     gp_Pnt q;
     gp_Vec su, sv;
-    w.faces[w.bestFace]->surface.D1(w.bestU, w.bestV, q, su, sv);
-    gp_Vec n = su.Crossed(sv);
-    const bool reversed = (shared_->topo.face(w.bestFace).Orientation() == TopAbs_REVERSED) != shared_->inwardFaces;
-    if (n.Magnitude() > 1e-300) {
-      const double side = gp_Vec(foot.point, p).Dot(n.Normalized()) * (reversed ? -1 : 1);
-      if (std::abs(side) >= 0.99 * foot.distance) return side < 0;
+    w.faces[f]->surface.D1(u, v, q, su, sv);
+    const gp_Vec n = su.Crossed(sv);
+    if (n.Magnitude() <= 1e-300) return 0;
+    const bool reversed = (s.topo.face(f).Orientation() == TopAbs_REVERSED) != s.inwardFaces;
+    const double side = gp_Vec(q, p).Dot(n.Normalized()) * (reversed ? -1 : 1);
+    if (std::abs(side) < 0.99 * q.Distance(p)) return 0;
+    return side < 0 ? -1 : 1;
+  };
+  if (w.bestFace >= 0) {
+    if (const int side = sideByNormal(w.bestFace, w.bestU, w.bestV)) return side < 0;
+  } else if (w.bestSmoothEdge >= 0 && BRep_Tool::SameParameter(s.topo.edge(w.bestSmoothEdge))) {
+    // Either face's normal: the surface is smooth across the edge. (A
+    // seam's two pcurves give the same point and normal.)
+    const TopoDS_Edge& edge = s.topo.edge(w.bestSmoothEdge);
+    for (int f : s.topo.edgeFaces[w.bestSmoothEdge]) {
+      if (f < 0) continue;
+      double first, last;
+      const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, s.topo.face(f), first, last);
+      if (pcurve.IsNull()) continue;
+      const gp_Pnt2d uv = pcurve->Value(w.bestT);
+      if (const int side = sideByNormal(f, uv.X(), uv.Y())) return side < 0;
+      break;
     }
   }
+  ++w.classifierQueries;
   if (!work_->classifier) work_->classifier = std::make_unique<BRepClass3d_SolidClassifier>(shared_->solid);
   work_->classifier->Perform(p, onTolerance);
   const TopAbs_State state = work_->classifier->State();
   return state == TopAbs_IN || state == TopAbs_ON;
 }
+
+std::size_t ExactOracle::classifierQueries() const { return work_->classifierQueries; }
 
 double ExactOracle::distance(const gp_Pnt& p) { return closestPoint(p).distance; }
 
@@ -526,6 +562,7 @@ std::vector<BoundaryPoint> ExactOracle::query(const gp_Pnt& p, double slack, boo
   double best = std::numeric_limits<double>::infinity();
   w.bestFace = -1;
   w.bestEdgeSide = 0;
+  w.bestSmoothEdge = -1;
   // `interior`: a face point where the surface is smooth (see FaceSolver::smoothPoint).
   // For nearPoints, edge and vertex points count only where the distance to
   // the boundary has a local minimum, i.e. does not decrease into any
@@ -553,16 +590,28 @@ std::vector<BoundaryPoint> ExactOracle::query(const gp_Pnt& p, double slack, boo
     return true;
   };
   // edgeSide: of an edge point strictly inside the edge's parameter range.
+  gp_Pnt bestPoint;
+  // smoothEdgeT: the parameter of an edge point strictly inside a smooth edge (else NaN).
   auto add = [&](const gp_Pnt& q, int face, int edge, int vertex, bool interior = false, double u = 0, double v = 0,
-                 int edgeSide = 0) {
+                 int edgeSide = 0, double smoothEdgeT = std::numeric_limits<double>::quiet_NaN()) {
     const double d = p.Distance(q);
     if (d <= best + slack) found.push_back({q, d, face, edge, vertex});
     if (d < best) {
       best = d;
+      bestPoint = q;
       w.bestFace = interior ? face : -1;
       w.bestU = u;
       w.bestV = v;
       w.bestEdgeSide = edgeSide;
+      w.bestSmoothEdge = std::isnan(smoothEdgeT) ? -1 : edge;
+      w.bestT = smoothEdgeT;
+    } else if (!std::isnan(smoothEdgeT) && w.bestFace < 0 && w.bestEdgeSide == 0 &&
+               q.Distance(bestPoint) <= 1e-9 * std::max(d, s.diagonal)) {
+      // The same foot, found before as a face point on the face's boundary
+      // (ON, so not known to be smooth there): the smooth edge tells. (Not
+      // another foot as near: from a point on an axis a whole circle is.)
+      w.bestSmoothEdge = edge;
+      w.bestT = smoothEdgeT;
     }
   };
   for (const auto& [lowerBound, f] : w.candidates) {
@@ -622,7 +671,8 @@ std::vector<BoundaryPoint> ExactOracle::query(const gp_Pnt& p, double slack, boo
         const double t = ext.Point(n).Parameter();
         const bool inner = t > t0 + 1e-9 * (t1 - t0) && t < t1 - 1e-9 * (t1 - t0);
         if (nearOnly && !edgePointIsLocalMinimum(e, t, ext.Point(n).Value())) continue;
-        add(ext.Point(n).Value(), -1, e, -1, false, 0, 0, inner ? s.edgeSide[e] : 0);
+        add(ext.Point(n).Value(), -1, e, -1, false, 0, 0, inner ? s.edgeSide[e] : 0,
+            inner && s.edgeSmooth[e] ? t : std::numeric_limits<double>::quiet_NaN());
       }
     }
     for (int vtx : s.faceVertices[f]) {

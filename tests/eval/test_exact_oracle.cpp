@@ -9,7 +9,10 @@
 #include <filesystem>
 #include <random>
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
@@ -22,6 +25,7 @@
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS_Compound.hxx>
 
@@ -173,6 +177,66 @@ TEST(ExactOracle, DegeneratePointsHaveHandDistances) {
       EXPECT_NEAR(near.front().distance, 10, 1e-9);
     }
     EXPECT_NEAR(torus.distance(gp_Pnt(0, 0, 0)), 20, 1e-9);  // centre: the inner equator
+  }
+}
+
+// Points whose closest boundary point is inside a seam or a tangent edge
+// (not a face point: the medial facets over edge samples put many there):
+// the normal of either face decides, as OCCT's classifier does, and the
+// classifier is not asked.
+void expectSmoothEdgeSidesByNormal(const TopoDS_Shape& solid, const std::vector<std::pair<gp_Pnt, gp_Vec>>& probes) {
+  ExactOracle oracle(solid);
+  BRepClass3d_SolidClassifier classifier(solid);
+  int inner = 0, outer = 0;
+  for (const auto& [onEdge, outward] : probes)
+    for (double d : {-2.0, -0.5, -0.01, 0.01, 0.5, 2.0}) {
+      const gp_Pnt p = onEdge.Translated(outward * d);
+      classifier.Perform(p, 1e-9);
+      const bool expected = classifier.State() == TopAbs_IN;
+      double distance = 0;
+      EXPECT_EQ(oracle.inside(p, 0, &distance), expected) << "at (" << p.X() << ", " << p.Y() << ", " << p.Z() << ")";
+      EXPECT_NEAR(distance, std::abs(d), 1e-9);
+      (expected ? inner : outer)++;
+    }
+  EXPECT_GT(inner, 0);
+  EXPECT_GT(outer, 0);
+  EXPECT_EQ(oracle.classifierQueries(), 0u);
+}
+
+TEST(ExactOracle, ASeamOrATangentEdgeDecidesTheSideByTheNormal) {
+  {
+    // The cylinder's seam (R 10, z 0..30): radial lines through it.
+    const TopoDS_Shape cylinder = loadModel(modelPath("cylinder.step")).solids[0];
+    std::vector<std::pair<gp_Pnt, gp_Vec>> probes;
+    for (TopExp_Explorer faces(cylinder, TopAbs_FACE); faces.More(); faces.Next())
+      for (TopExp_Explorer edges(faces.Current(), TopAbs_EDGE); edges.More(); edges.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(edges.Current());
+        if (!BRep_Tool::IsClosed(edge, TopoDS::Face(faces.Current()))) continue;
+        const BRepAdaptor_Curve curve(edge);
+        for (double f : {0.25, 0.5, 0.75}) {
+          const gp_Pnt q = curve.Value(curve.FirstParameter() + f * (curve.LastParameter() - curve.FirstParameter()));
+          probes.emplace_back(q, gp_Vec(q.X(), q.Y(), 0).Normalized());
+        }
+      }
+    ASSERT_FALSE(probes.empty()) << "the cylinder has no seam";
+    expectSmoothEdgeSidesByNormal(cylinder, probes);
+  }
+  {
+    // A box 40 x 30 x 20 with its edge x = 40, y = 30 rounded (r 5): the
+    // fillet meets the face y = 30 tangentially along x = 35, the face
+    // x = 40 along y = 25.
+    BRepPrimAPI_MakeBox box(40, 30, 20);
+    BRepFilletAPI_MakeFillet fillet(box.Shape());
+    for (TopExp_Explorer edges(box.Shape(), TopAbs_EDGE); edges.More(); edges.Next()) {
+      const BRepAdaptor_Curve curve(TopoDS::Edge(edges.Current()));
+      const gp_Pnt mid = curve.Value(0.5 * (curve.FirstParameter() + curve.LastParameter()));
+      if (std::abs(mid.X() - 40) < 1e-9 && std::abs(mid.Y() - 30) < 1e-9) fillet.Add(5, TopoDS::Edge(edges.Current()));
+    }
+    const TopoDS_Shape rounded = fillet.Shape();
+    ASSERT_TRUE(fillet.IsDone());
+    expectSmoothEdgeSidesByNormal(rounded, {{gp_Pnt(35, 30, 5), gp_Vec(0, 1, 0)},
+                                            {gp_Pnt(35, 30, 12), gp_Vec(0, 1, 0)},
+                                            {gp_Pnt(40, 25, 8), gp_Vec(1, 0, 0)}});
   }
 }
 

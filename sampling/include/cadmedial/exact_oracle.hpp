@@ -49,10 +49,14 @@ class ExactOracle {
   ~ExactOracle();
 
   // Inside the solid or within onTolerance of its boundary. Decided by the
-  // outward normal at the closest point when the surface is smooth there,
-  // otherwise by BRepClass3d_SolidClassifier. If `distance` is given, the
-  // exact distance to the boundary (computed on the way) is stored there.
+  // outward normal at the closest point when the surface is smooth there
+  // (inside a face, a seam or a tangent edge), by the side of a sharp edge
+  // the closest point is inside of, otherwise by BRepClass3d_SolidClassifier.
+  // If `distance` is given, the exact distance to the boundary (computed on
+  // the way) is stored there.
   bool inside(const gp_Pnt& p, double onTolerance = 0, double* distance = nullptr);
+  // How many inside() calls of this copy went to the classifier.
+  std::size_t classifierQueries() const;
 
   // Exact unsigned distance from p to the boundary, and a closest point.
   double distance(const gp_Pnt& p);
