@@ -59,7 +59,8 @@ SolidResult attempt(const TopoDS_Shape& solid, const SamplingParams& sampling, c
   };
   InsideOracle oracle;
   // The check asks ExactOracle (the evaluation's inside test: the normal at
-  // the nearest point, the classifier only at edges and vertices): OCCT's
+  // a smooth nearest point, the convexity at a sharp edge, the classifier
+  // only at vertices and where those are in doubt): OCCT's
   // classifier at every centroid cost 10-100 times the axis on curved
   // parts. The walk calls it from several threads: one copy per thread (the
   // copies share the meshes and boxes, medial_evaluation does the same).

@@ -184,7 +184,8 @@ InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& 
     // the oracle is safe to call concurrently, medial_params.hpp), the
     // counts after, in order.
     std::vector<std::uint8_t> facetInside(nf, 0), forcedInside(forced.triangles.size(), 0);
-    tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 256), [&](const tbb::blocked_range<Index>& r) {
+    const tbb::blocked_range<Index> facets(0, static_cast<Index>(nf), 256);
+    tbb::parallel_for(facets, [&](const tbb::blocked_range<Index>& r) {
       for (Index f = r.begin(); f != r.end(); ++f) {
         if (selected.unbounded[f]) continue;
         bool far = false;

@@ -385,7 +385,7 @@ ExactOracle::ExactOracle(const TopoDS_Shape& solid, const ExactOracleParams& par
   for (int e = 0; e < ne; ++e) {
     const EdgeFeature& f = features[e];
     if (f.free || f.mixedSign || topo.edgeDegenerate[e]) continue;
-    s.edgeSmooth[e] = f.seam || f.kind == EdgeKind::Smooth;
+    s.edgeSmooth[e] = f.seam || (f.kind == EdgeKind::Smooth && f.validProbes > 0);
     if (f.seam) continue;
     s.edgeSide[e] = f.kind == EdgeKind::Convex ? 1 : f.kind == EdgeKind::Concave ? -1 : 0;
   }
@@ -455,8 +455,9 @@ bool ExactOracle::inside(const gp_Pnt& p, double onTolerance, double* distance) 
   Workspace& w = *work_;
   const Shared& s = *shared_;
   if (w.bestEdgeSide != 0) return w.bestEdgeSide < 0;
-  // -1 inside, +1 outside, 0 when p − S(u, v) is not clearly along face f's
-  // normal there (S(u, v) is the foot, or as near as it).
+  // -1 inside, +1 outside, 0 when p − foot is not clearly along face f's
+  // normal at S(u, v) (the foot itself, or within the edge's tolerance of
+  // it when the foot is on an edge).
   auto sideByNormal = [&](int f, double u, double v) {
     if (!w.faces[f]) w.faces[f] = std::make_unique<FaceSolver>(s.topo.face(f));
     gp_Pnt q;
@@ -465,25 +466,37 @@ bool ExactOracle::inside(const gp_Pnt& p, double onTolerance, double* distance) 
     const gp_Vec n = su.Crossed(sv);
     if (n.Magnitude() <= 1e-300) return 0;
     const bool reversed = (s.topo.face(f).Orientation() == TopAbs_REVERSED) != s.inwardFaces;
-    const double side = gp_Vec(q, p).Dot(n.Normalized()) * (reversed ? -1 : 1);
-    if (std::abs(side) < 0.99 * q.Distance(p)) return 0;
+    const double side = gp_Vec(foot.point, p).Dot(n.Normalized()) * (reversed ? -1 : 1);
+    if (std::abs(side) < 0.99 * foot.distance) return 0;
     return side < 0 ? -1 : 1;
   };
   if (w.bestFace >= 0) {
     if (const int side = sideByNormal(w.bestFace, w.bestU, w.bestV)) return side < 0;
-  } else if (w.bestSmoothEdge >= 0 && BRep_Tool::SameParameter(s.topo.edge(w.bestSmoothEdge))) {
-    // Either face's normal: the surface is smooth across the edge. (A
-    // seam's two pcurves give the same point and normal.)
+  } else if (w.bestSmoothEdge >= 0 && BRep_Tool::SameParameter(s.topo.edge(w.bestSmoothEdge)) &&
+             foot.distance > 4 * BRep_Tool::Tolerance(s.topo.edge(w.bestSmoothEdge))) {
+    // Both faces' normals, which must agree: the surface is smooth across
+    // the edge (a seam's two pcurves give the same point and normal). Not
+    // within a few edge tolerances of the edge, where the pcurves' points
+    // may be as far from the foot as p is.
     const TopoDS_Edge& edge = s.topo.edge(w.bestSmoothEdge);
+    int agreed = 0;
     for (int f : s.topo.edgeFaces[w.bestSmoothEdge]) {
       if (f < 0) continue;
       double first, last;
       const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, s.topo.face(f), first, last);
-      if (pcurve.IsNull()) continue;
+      if (pcurve.IsNull()) {
+        agreed = 0;
+        break;
+      }
       const gp_Pnt2d uv = pcurve->Value(w.bestT);
-      if (const int side = sideByNormal(f, uv.X(), uv.Y())) return side < 0;
-      break;
+      const int side = sideByNormal(f, uv.X(), uv.Y());
+      if (side == 0 || (agreed != 0 && side != agreed)) {
+        agreed = 0;
+        break;
+      }
+      agreed = side;
     }
+    if (agreed != 0) return agreed < 0;
   }
   ++w.classifierQueries;
   if (!work_->classifier) work_->classifier = std::make_unique<BRepClass3d_SolidClassifier>(shared_->solid);
@@ -591,6 +604,7 @@ std::vector<BoundaryPoint> ExactOracle::query(const gp_Pnt& p, double slack, boo
   };
   // edgeSide: of an edge point strictly inside the edge's parameter range.
   gp_Pnt bestPoint;
+  bool bestOnFace = false;  // bestPoint came from a face's solvers (not an edge's or a vertex's)
   // smoothEdgeT: the parameter of an edge point strictly inside a smooth edge (else NaN).
   auto add = [&](const gp_Pnt& q, int face, int edge, int vertex, bool interior = false, double u = 0, double v = 0,
                  int edgeSide = 0, double smoothEdgeT = std::numeric_limits<double>::quiet_NaN()) {
@@ -599,13 +613,14 @@ std::vector<BoundaryPoint> ExactOracle::query(const gp_Pnt& p, double slack, boo
     if (d < best) {
       best = d;
       bestPoint = q;
+      bestOnFace = face >= 0;
       w.bestFace = interior ? face : -1;
       w.bestU = u;
       w.bestV = v;
       w.bestEdgeSide = edgeSide;
       w.bestSmoothEdge = std::isnan(smoothEdgeT) ? -1 : edge;
       w.bestT = smoothEdgeT;
-    } else if (!std::isnan(smoothEdgeT) && w.bestFace < 0 && w.bestEdgeSide == 0 &&
+    } else if (!std::isnan(smoothEdgeT) && bestOnFace && w.bestFace < 0 &&
                q.Distance(bestPoint) <= 1e-9 * std::max(d, s.diagonal)) {
       // The same foot, found before as a face point on the face's boundary
       // (ON, so not known to be smooth there): the smooth edge tells. (Not

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepTools.hxx>
@@ -71,8 +72,15 @@ FaceUVClassifier::FaceUVClassifier(const TopoDS_Face& face, double tolUV) {
   const BRep_Builder builder;
   auto faceWith = [&](const TopoDS_Wire* hole) {
     TopoDS_Face copy = TopoDS::Face(forward.EmptyCopied());
-    builder.Add(copy, outer);
-    if (hole) builder.Add(copy, *hole);
+    {
+      // Add also writes to the wire's shared TShape (it marks it not free,
+      // which it already is), and other threads build classifiers from the
+      // same wires (ExactOracle has one per thread).
+      static std::mutex addMutex;
+      const std::lock_guard<std::mutex> lock(addMutex);
+      builder.Add(copy, outer);
+      if (hole) builder.Add(copy, *hole);
+    }
     return std::make_unique<BRepTopAdaptor_FClass2d>(copy, tolUV);
   };
   outerOnly_ = faceWith(nullptr);

@@ -69,6 +69,7 @@ std::vector<EdgeFeature> classifyEdges(const SolidTopology& topo, double smoothA
       const EdgeFaceFrame a = edgeFaceFrame(edge, topo.face(fl), t);
       const EdgeFaceFrame b = edgeFaceFrame(edge, topo.face(fr), t);
       if (!a.valid || !b.valid) continue;
+      ++feat.validProbes;
       const double cosNormals = std::clamp(a.outwardNormal.Dot(b.outwardNormal), -1.0, 1.0);
       maxDev = std::max(maxDev, degrees(std::acos(cosNormals)));
       if (cosNormals >= smoothCos) continue;

@@ -16,6 +16,7 @@ struct EdgeFeature {
   bool free = false;        // bounds only one face: the shell is open there
   bool mixedSign = false;   // convex along part of it, concave along another part
   double maxDeviationDeg = 0;  // max angle between the two outward normals along it
+  int validProbes = 0;  // probes where both faces gave a frame; with none, Smooth is only the default
   double length = 0;
   bool sharp() const { return kind != EdgeKind::Smooth; }
 };

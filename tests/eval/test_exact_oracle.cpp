@@ -232,8 +232,9 @@ TEST(ExactOracle, ASeamOrATangentEdgeDecidesTheSideByTheNormal) {
       const gp_Pnt mid = curve.Value(0.5 * (curve.FirstParameter() + curve.LastParameter()));
       if (std::abs(mid.X() - 40) < 1e-9 && std::abs(mid.Y() - 30) < 1e-9) fillet.Add(5, TopoDS::Edge(edges.Current()));
     }
-    const TopoDS_Shape rounded = fillet.Shape();
+    fillet.Build();
     ASSERT_TRUE(fillet.IsDone());
+    const TopoDS_Shape rounded = fillet.Shape();
     expectSmoothEdgeSidesByNormal(rounded, {{gp_Pnt(35, 30, 5), gp_Vec(0, 1, 0)},
                                             {gp_Pnt(35, 30, 12), gp_Vec(0, 1, 0)},
                                             {gp_Pnt(40, 25, 8), gp_Vec(1, 0, 0)}});
