@@ -470,33 +470,30 @@ bool ExactOracle::inside(const gp_Pnt& p, double onTolerance, double* distance) 
     if (std::abs(side) < 0.99 * foot.distance) return 0;
     return side < 0 ? -1 : 1;
   };
+  // Across a smooth edge: both faces' normals, which must agree (a seam's
+  // two pcurves give the same point and normal); 0 when either cannot tell.
+  auto sideAcrossSmoothEdge = [&](int e) {
+    const TopoDS_Edge& edge = s.topo.edge(e);
+    int agreed = 0;
+    for (int f : s.topo.edgeFaces[e]) {
+      if (f < 0) continue;
+      double first, last;
+      const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, s.topo.face(f), first, last);
+      if (pcurve.IsNull()) return 0;
+      const gp_Pnt2d uv = pcurve->Value(w.bestT);
+      const int side = sideByNormal(f, uv.X(), uv.Y());
+      if (side == 0 || (agreed != 0 && side != agreed)) return 0;
+      agreed = side;
+    }
+    return agreed;
+  };
   if (w.bestFace >= 0) {
     if (const int side = sideByNormal(w.bestFace, w.bestU, w.bestV)) return side < 0;
   } else if (w.bestSmoothEdge >= 0 && BRep_Tool::SameParameter(s.topo.edge(w.bestSmoothEdge)) &&
              foot.distance > 4 * BRep_Tool::Tolerance(s.topo.edge(w.bestSmoothEdge))) {
-    // Both faces' normals, which must agree: the surface is smooth across
-    // the edge (a seam's two pcurves give the same point and normal). Not
-    // within a few edge tolerances of the edge, where the pcurves' points
-    // may be as far from the foot as p is.
-    const TopoDS_Edge& edge = s.topo.edge(w.bestSmoothEdge);
-    int agreed = 0;
-    for (int f : s.topo.edgeFaces[w.bestSmoothEdge]) {
-      if (f < 0) continue;
-      double first, last;
-      const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, s.topo.face(f), first, last);
-      if (pcurve.IsNull()) {
-        agreed = 0;
-        break;
-      }
-      const gp_Pnt2d uv = pcurve->Value(w.bestT);
-      const int side = sideByNormal(f, uv.X(), uv.Y());
-      if (side == 0 || (agreed != 0 && side != agreed)) {
-        agreed = 0;
-        break;
-      }
-      agreed = side;
-    }
-    if (agreed != 0) return agreed < 0;
+    // Not within a few edge tolerances of the edge, where the pcurves'
+    // points may be as far from the foot as p is.
+    if (const int side = sideAcrossSmoothEdge(w.bestSmoothEdge)) return side < 0;
   }
   ++w.classifierQueries;
   if (!work_->classifier) work_->classifier = std::make_unique<BRepClass3d_SolidClassifier>(shared_->solid);
