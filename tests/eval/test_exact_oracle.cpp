@@ -26,7 +26,9 @@
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Compound.hxx>
 
 #include "cadmedial/brep_io.hpp"
@@ -130,6 +132,26 @@ TEST(ExactOracle, AgreesWithDistShapeShapeOnBSplineLoft) {
     splineFaces += BRepAdaptor_Surface(TopoDS::Face(ex.Current())).GetType() == GeomAbs_BSplineSurface;
   ASSERT_GT(splineFaces, 0);
   expectAgreesWithOcct(loft.Shape(), "B-spline loft", 300);
+}
+
+// A box 60 x 40 x 30 with every edge rounded from r 1.5 to r 5: B-spline
+// fillet faces, whose closest point from inside the box is often on their
+// boundary. There the oracle searches the face by Newton from its mesh
+// triangles near the query, not by OCCT's global search (ExactOracle::query);
+// the distances and sides must still be OCCT's.
+TEST(ExactOracle, AgreesWithDistShapeShapeOnVariableFillets) {
+  BRepPrimAPI_MakeBox box(60, 40, 30);
+  BRepFilletAPI_MakeFillet fillet(box.Shape());
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(box.Shape(), TopAbs_EDGE, edges);
+  for (int i = 1; i <= edges.Extent(); ++i) fillet.Add(1.5, 5, TopoDS::Edge(edges(i)));
+  fillet.Build();
+  ASSERT_TRUE(fillet.IsDone());
+  int splineFaces = 0;
+  for (TopExp_Explorer ex(fillet.Shape(), TopAbs_FACE); ex.More(); ex.Next())
+    splineFaces += BRepAdaptor_Surface(TopoDS::Face(ex.Current())).GetType() == GeomAbs_BSplineSurface;
+  ASSERT_GE(splineFaces, 12);
+  expectAgreesWithOcct(fillet.Shape(), "variable fillets", 400);
 }
 
 // Every closed solid of the public models (first two per file), when present.

@@ -4,12 +4,14 @@
 // A fine BRepMesh triangulation in a bounding-volume tree only *selects*
 // candidate faces (those whose mesh distance is within a few mesh deflections
 // of the best); the distance itself is computed on the exact OCCT geometry of
-// those faces: all extrema on the surface (Extrema_ExtPS) kept if their UV
-// lies in the face (FaceUVClassifier: FClass2d, split per hole), a Newton
-// projection started from the mesh foot point (catches the degenerate cases
-// where the analytic solver gives up, e.g. a point on a torus' core circle),
-// and the minima on the face's edges and vertices for feet on the face
-// boundary.
+// those faces: a Newton projection started from the mesh foot point
+// (catches the degenerate cases where the analytic solver gives up, e.g. a
+// point on a torus' core circle), all extrema on the surface
+// (Extrema_ExtPS) on analytic faces and where Newton finds nothing (on
+// B-spline faces first Newton from the face's other triangles near p: the
+// global search costs milliseconds there), each kept if its UV lies in the
+// face (FaceUVClassifier: FClass2d, split per hole), and the minima on the
+// face's edges and vertices for feet on the face boundary.
 #pragma once
 
 #include <memory>
