@@ -29,8 +29,30 @@ install_missing_packages() {
   echo "setup: installing ${missing[*]}"
   local sudo=""
   [ "$(id -u)" -eq 0 ] || sudo="sudo"
-  $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  apt_when_free $sudo apt-get update -qq
+  apt_when_free $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+# Runs an apt-get command, waiting while another apt or dpkg holds its lock
+# (a fresh machine's unattended upgrades, a second setup run): apt-get update
+# fails at once on a held lock instead of waiting. Other failures end setup.
+apt_when_free() {
+  local attempt errors
+  errors="$(mktemp)"
+  for attempt in $(seq 1 90); do
+    if "$@" 2>"$errors"; then
+      cat "$errors" >&2; rm -f "$errors"; return 0
+    fi
+    cat "$errors" >&2
+    if ! grep -q "Could not get lock" "$errors"; then
+      rm -f "$errors"; return 1
+    fi
+    echo "setup: apt is busy with another install; waiting ($attempt/90)" >&2
+    sleep 10
+  done
+  rm -f "$errors"
+  echo "setup: apt stayed busy for 15 min; run setup again when it is free" >&2
+  return 1
 }
 
 build_project() {
