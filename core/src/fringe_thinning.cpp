@@ -173,11 +173,30 @@ std::size_t thinFringe(MedialComplex& mc, const SampleSet& samples, const Fringe
   for (std::size_t p = 0; p < nf; ++p)
     if (candidate[p])
       for (Index k = mc.polygonOffsets[p]; k < mc.polygonOffsets[p + 1]; ++k) asked[mc.polygonVertices[k]] = 1;
+  // A vertex's neighbours along the polygons' sides are asked first, by the
+  // same inequality over the same balls as the tree's search (so the answer
+  // is the same): on a fin the next vertex toward the curve usually
+  // dominates, and the search is left for the vertices none of them does.
+  auto dominatedByNeighbour = [&](Index v, double limit) {
+    auto dominates = [&](Index u) {
+      const double d = BallTree::distance(mc.vertices[v], mc.vertices[u]);
+      return !(d < params.minReach) && d - mc.radius[u] / params.cosBeta <= limit;
+    };
+    for (Index j = vertexOffsets[v]; j < vertexOffsets[v + 1]; ++j) {
+      const Index p = vertexPolygons[j], b = mc.polygonOffsets[p], n = mc.polygonSize(p);
+      for (Index i = 0; i < n; ++i)
+        if (mc.polygonVertices[b + i] == v &&
+            (dominates(mc.polygonVertices[b + (i + 1) % n]) || dominates(mc.polygonVertices[b + (i + n - 1) % n])))
+          return true;
+    }
+    return false;
+  };
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 1024), [&](const auto& r) {
     for (std::size_t v = r.begin(); v != r.end(); ++v) {
-      if (!asked[v]) continue;
+      if (!asked[v] || !(mc.radius[v] > 0)) continue;
       const double limit = (params.slack - mc.radius[v]) / params.cosBeta;
-      dominated[v] = mc.radius[v] > 0 && tree.minGap(mc.vertices[v], limit, params.minReach) <= limit;
+      dominated[v] = dominatedByNeighbour(static_cast<Index>(v), limit) ||
+                     tree.minGap(mc.vertices[v], limit, params.minReach) <= limit;
     }
   });
   auto isDominated = [&](Index v) { return dominated[v] == 1; };
@@ -244,15 +263,16 @@ std::size_t thinFringe(MedialComplex& mc, const SampleSet& samples, const Fringe
   while (!queue.empty()) {
     const Index p = queue.back();
     queue.pop_back();
-    if (!alive[p] || !collapsible(p)) continue;
+    if (!candidate[p] || !collapsible(p)) continue;
     alive[p] = 0;
+    candidate[p] = 0;  // from here on: may still go (alive and a candidate), one read in the loop below
     ++removed;
     for (Index k = mc.polygonOffsets[p]; k < mc.polygonOffsets[p + 1]; ++k) {
       --edgeUse[edges.slotEdge[k]];
       const Index v = mc.polygonVertices[k];
       --vertexUse[v];
       for (Index j = vertexOffsets[v]; j < vertexOffsets[v + 1]; ++j)
-        if (alive[vertexPolygons[j]] && candidate[vertexPolygons[j]]) queue.push_back(vertexPolygons[j]);
+        if (candidate[vertexPolygons[j]]) queue.push_back(vertexPolygons[j]);
     }
   }
   if (removed > 0) keepPolygons(mc, alive);

@@ -94,6 +94,19 @@ TEST(FringeThinning, SheetWhoseRadiusGrowsSlowerThanDistanceStays) {
   EXPECT_EQ(mc.polygonCount(), 12u);
 }
 
+TEST(FringeThinning, BallsNearerThanMinReachDoNotDominate) {
+  // With minReach 1.5 the inner fin vertices' only dominating balls (the
+  // core vertices beside them, 1 away) are too near to count, and the next
+  // ones (√3 away) do not contain theirs: the outer fin row goes (its
+  // vertices are 2 from the core), the inner one stays.
+  MedialComplex mc = coreWithFin(1.0);
+  FringeThinningParams p = defaults();
+  p.minReach = 1.5;
+  EXPECT_EQ(thinFringe(mc, twoPlanes(), p), 4u);
+  EXPECT_EQ(mc.polygonCount(), 8u);
+  for (double r : mc.radius) EXPECT_GE(r, 9);
+}
+
 TEST(FringeThinning, ChordsAcrossTheSolidAndSharpFeaturesAreNotFringe) {
   MedialComplex acrossSolid = coreWithFin(1.0);
   for (std::size_t p = 4; p < acrossSolid.polygonCount(); ++p) acrossSolid.provenanceSamples[p] = {0, 5};

@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include <tbb/parallel_invoke.h>
+
 #include "cadmedial/sample_set.hpp"
 
 namespace cadmedial {
@@ -22,8 +24,18 @@ class BallTree {
     Vec3 centre;
     double radius;
   };
+  // |a - b| exactly as the search computes it, so that a caller testing a
+  // few balls itself before a search gets the search's answer for them.
+  static double distance(const Vec3& a, const Vec3& b) {
+    const double x = a[0] - b[0], y = a[1] - b[1], z = a[2] - b[2];
+    return std::sqrt(x * x + y * y + z * z);
+  }
+
   explicit BallTree(std::vector<Ball> balls) : balls_(std::move(balls)) {
-    if (!balls_.empty()) build(0, static_cast<std::uint32_t>(balls_.size()));
+    if (balls_.empty()) return;
+    const auto n = static_cast<std::uint32_t>(balls_.size());
+    nodes_.resize(nodeCount(n));
+    build(0, n, 0);
   }
 
   // Smallest gap |p - c| - r over all balls (+inf without balls); the search
@@ -75,10 +87,6 @@ class BallTree {
     std::uint32_t begin = 0, end = 0;
     std::int32_t left = -1, right = -1;
   };
-  static double distance(const Vec3& a, const Vec3& b) {
-    const double x = a[0] - b[0], y = a[1] - b[1], z = a[2] - b[2];
-    return std::sqrt(x * x + y * y + z * z);
-  }
   static double bound(const Node& n, const Vec3& p) {
     double s = 0;
     for (int k = 0; k < 3; ++k) {
@@ -87,8 +95,17 @@ class BallTree {
     }
     return std::sqrt(s) - n.maxRadius;
   }
-  std::int32_t build(std::uint32_t begin, std::uint32_t end) {
-    Node node;
+  // Nodes of the subtree over n balls: a leaf holds up to 8, a node splits
+  // at the median. The tree is stored in pre-order (a node, its left
+  // subtree, its right subtree), so each subtree's place is known before it
+  // is built and the two halves of a large range are built in parallel into
+  // the same array a serial build would make.
+  static std::uint32_t nodeCount(std::uint32_t n) {
+    if (n <= 8) return 1;
+    return 1 + nodeCount(n / 2) + nodeCount(n - n / 2);
+  }
+  void build(std::uint32_t begin, std::uint32_t end, std::uint32_t id) {
+    Node& node = nodes_[id];
     node.begin = begin;
     node.end = end;
     node.lo = node.hi = balls_[begin].centre;
@@ -100,21 +117,25 @@ class BallTree {
       }
       node.maxRadius = std::max(node.maxRadius, balls_[k].radius);
     }
-    const std::int32_t id = static_cast<std::int32_t>(nodes_.size());
-    nodes_.push_back(node);
-    if (end - begin <= 8) return id;
+    if (end - begin <= 8) return;
     int axis = 0;
     for (int j = 1; j < 3; ++j)
       if (node.hi[j] - node.lo[j] > node.hi[axis] - node.lo[axis]) axis = j;
     const std::uint32_t mid = begin + (end - begin) / 2;
     std::nth_element(balls_.begin() + begin, balls_.begin() + mid, balls_.begin() + end,
                      [axis](const Ball& a, const Ball& b) { return a.centre[axis] < b.centre[axis]; });
-    const std::int32_t left = build(begin, mid);
-    const std::int32_t right = build(mid, end);
-    nodes_[id].left = left;
-    nodes_[id].right = right;
-    return id;
+    const std::uint32_t left = id + 1, right = left + nodeCount(mid - begin);
+    node.left = static_cast<std::int32_t>(left);
+    node.right = static_cast<std::int32_t>(right);
+    if (end - begin >= kParallelBuild) {
+      tbb::parallel_invoke([&] { build(begin, mid, left); }, [&] { build(mid, end, right); });
+    } else {
+      build(begin, mid, left);
+      build(mid, end, right);
+    }
   }
+  // Below this many balls a subtree is built serially (a task costs more).
+  static constexpr std::uint32_t kParallelBuild = 4096;
   std::vector<Ball> balls_;
   std::vector<Node> nodes_;
 };
