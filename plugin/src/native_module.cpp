@@ -92,9 +92,11 @@ Input readInput(const std::string& source) {
   if (looksLikeBrepText(source)) {
     in.name = "BREP text";
     const TopoDS_Shape shape = readBrepString(source);
-    in.solids = closedSolidsOf(shape, &in.warnings);
+    std::string sewing;
+    in.solids = closedSolidsOf(shape, &in.warnings, &sewing);
     if (in.solids.empty())
-      throw InputError(kExitNoSolid, "the shape has no closed solid; " + describeShape(takeCensus(shape)));
+      throw InputError(kExitNoSolid, "the shape has no closed solid; " + describeShape(takeCensus(shape)) +
+                                         (sewing.empty() ? "" : "; " + sewing));
   } else {
     LoadedModel model = loadModel(source);
     in.name = source;

@@ -28,6 +28,7 @@
 #include <TopoDS.hxx>
 
 #include "cadmedial/errors.hpp"
+#include "sewn_solids.hpp"
 
 namespace cadmedial {
 namespace fs = std::filesystem;
@@ -185,7 +186,8 @@ TopoDS_Solid repairedIfInvalid(const TopoDS_Solid& solid, int index, std::vector
 
 }  // namespace
 
-std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<std::string>* warnings) {
+std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<std::string>* warnings,
+                                         std::string* sewing) {
   std::vector<TopoDS_Solid> result;
   int index = 0;
   for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next(), ++index) {
@@ -196,6 +198,16 @@ std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<
       warnings->push_back("solid " + std::to_string(index) + " skipped: its shell is not closed");
     }
   }
+  if (!result.empty()) return result;
+  // No closed solid: the faces may still close up (surface models).
+  SewingOutcome outcome;
+  const std::vector<TopoDS_Solid> sewn = solidsSewnFromFaces(shape, &outcome);
+  if (!outcome.tried) return result;
+  if (sewing) *sewing = describeSewing(outcome);
+  if (!sewn.empty() && warnings)
+    warnings->push_back("no closed solid in the input; its faces were " + describeSewing(outcome) + ", made into " +
+                        std::to_string(sewn.size()) + " solid(s)");
+  for (std::size_t k = 0; k < sewn.size(); ++k) result.push_back(repairedIfInvalid(sewn[k], static_cast<int>(k), warnings));
   return result;
 }
 
@@ -241,9 +253,12 @@ LoadedModel loadModel(const std::string& path) {
   }
 
   model.census = takeCensus(model.shape);
-  model.solids = closedSolidsOf(model.shape, &model.warnings);
+  std::string sewing;
+  model.solids = closedSolidsOf(model.shape, &model.warnings, &sewing);
   if (model.solids.empty())
-    throw InputError(kExitNoSolid, path + ": no closed solid; " + describeCensus(model.census));
+    throw InputError(kExitNoSolid, path + ": no closed solid; " + describeCensus(model.census) +
+                                       (sewing.empty() ? "" : "; " + sewing));
+  if (!sewing.empty()) return model;  // every face was sewn: none was ignored
   if (model.census.looseShells > 0)
     model.warnings.push_back(std::to_string(model.census.looseShells) +
                              " shell(s) outside any solid were ignored");

@@ -12,6 +12,8 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepCheck_Analyzer.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
 #include <Bnd_Box.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepOffsetAPI_MakeThickSolid.hxx>
@@ -108,17 +110,38 @@ TEST_F(BadInputs, CliPrintsOneLineAndTheDocumentedExitCode) {
 TEST_F(BadInputs, ShellOnlyAndSurfaceOnlyFilesSayWhatTheyHold) {
   const std::string dir = test::publicModelsDir();
   if (dir.empty()) GTEST_SKIP() << "../shared/models/public not present";
-  for (const char* name : {"belever_gear.step", "bearing.iges"}) {
-    try {
-      loadModel(dir + "/" + name);
-      ADD_FAILURE() << name << " should have no closed solid";
-    } catch (const InputError& e) {
-      EXPECT_EQ(e.code(), kExitNoSolid) << name;
-      EXPECT_NE(std::string(e.what()).find("face"), std::string::npos) << e.what();
-    }
-    std::string err;
-    EXPECT_EQ(runCli(dir + "/" + name, err), kExitNoSolid) << err;
+  // 213 trimmed surfaces that do not close up even when sewn.
+  try {
+    loadModel(dir + "/bearing.iges");
+    ADD_FAILURE() << "bearing.iges should have no closed solid";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.code(), kExitNoSolid);
+    EXPECT_NE(std::string(e.what()).find("213 face(s)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("left open"), std::string::npos) << e.what();
   }
+  std::string err;
+  EXPECT_EQ(runCli(dir + "/bearing.iges", err), kExitNoSolid) << err;
+
+  // 53 single-face open shells that sew into one closed bevel gear: every
+  // face kept (the solid's area is the faces'), valid, matter inside.
+  const LoadedModel gear = loadModel(dir + "/belever_gear.step");
+  EXPECT_EQ(gear.census.solids, 0);
+  ASSERT_EQ(gear.solids.size(), 1u);
+  EXPECT_TRUE(BRepCheck_Analyzer(gear.solids[0]).IsValid());
+  double facesArea = 0;
+  for (TopExp_Explorer f(gear.shape, TopAbs_FACE); f.More(); f.Next()) {
+    GProp_GProps props;
+    BRepGProp::SurfaceProperties(f.Current(), props);
+    facesArea += props.Mass();
+  }
+  GProp_GProps area, volume;
+  BRepGProp::SurfaceProperties(gear.solids[0], area);
+  BRepGProp::VolumeProperties(gear.solids[0], volume);
+  EXPECT_NEAR(area.Mass(), facesArea, 1e-6 * facesArea);
+  EXPECT_GT(volume.Mass(), 0);
+  bool warned = false;
+  for (const std::string& w : gear.warnings) warned = warned || w.find("sewn at tolerance") != std::string::npos;
+  EXPECT_TRUE(warned);
 }
 
 // A small box with filleted edges, hollowed to 0.6 through its top face with

@@ -42,7 +42,12 @@ ShapeCensus takeCensus(const TopoDS_Shape& shape);
 // Closed solids of a shape (a solid whose shells have no free edge). A solid
 // BRepCheck rejects is replaced by its ShapeFix repair when that is one
 // closed solid of the same area that passes BRepCheck, else kept as it is;
-// either way a warning says so.
-std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<std::string>* warnings = nullptr);
+// either way a warning says so. A shape with no closed solid (IGES trimmed
+// surfaces, a STEP surface model, loose faces) has its faces sewn
+// (sewn_solids.hpp): each closed shell becomes a solid, a warning says so,
+// and *sewing gets one clause on what the sewing did (also when nothing
+// closed, for the caller's error message).
+std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<std::string>* warnings = nullptr,
+                                         std::string* sewing = nullptr);
 
 }  // namespace cadmedial
