@@ -578,6 +578,15 @@ def sample(source, spacing=0.0, progress=None, cancel=None, graded_spacing=True)
     return [SampleResult(d) for d in raw]
 
 
+def solids_brep(source):
+    """The closed solids of `source` as BREP text, one string each, and the
+    reading's warnings: {"solids": [...], "warnings": [...]}. A shape without
+    a solid (a closed shell, loose faces, IGES trimmed surfaces) has its
+    faces sewn into solids, as `cadmedial run` does. Raises InputError if
+    there is none."""
+    return _native.solids_brep(to_source(source))
+
+
 def inspect(source):
     """Per closed solid: default_spacing, area, volume, bbox_diagonal (fast, no sampling)."""
     return _native.inspect(to_source(source))

@@ -178,9 +178,34 @@ def source_solids(source):
     if "Shape" not in source.PropertiesList:
         raise ValueError(f"'{source.Label}' ({source.TypeId}) has no shape, so no solid; select a solid")
     shape = source_shape(source)
-    if shape is None or shape.isNull() or not shape.Solids:
+    if shape is None or shape.isNull() or not shape.Faces:
         raise ValueError(describe_non_solid(source, shape))
-    return shape.Solids
+    if shape.Solids:
+        return shape.Solids
+    return sewn_solids(source, shape)
+
+
+def sewn_solids(source, shape):
+    """The solids the faces of a shape without one sew into (a closed shell,
+    an imported IGES file's trimmed surfaces), made by the native module as
+    `cadmedial run` makes them; ValueError saying what is left open when
+    none closes. Sewing again on each call gives the same solids."""
+    import Part
+
+    try:
+        made = api.solids_brep(shape)
+    except api.InputError as e:
+        sewing = str(e).rsplit("; ", 1)[-1]  # the native message ends with what the sewing did
+        detail = f" (its faces, {sewing})" if sewing.startswith("sewn at") else ""
+        raise ValueError(describe_non_solid(source, shape) + detail) from None
+    solids = []
+    for text in made["solids"]:
+        solid = Part.Shape()
+        solid.importBrepFromString(text)
+        solids.extend(solid.Solids)
+    if not solids:
+        raise ValueError(describe_non_solid(source, shape))
+    return solids
 
 
 def source_solid(source, index):

@@ -24,12 +24,14 @@
 #include <exception>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
+#include <BRepTools.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 #include <Standard_Failure.hxx>
@@ -445,6 +447,31 @@ py::list inspect(const std::string& source) {
   return out;
 }
 
+// The closed solids of a source as BREP text, one string each: the solids
+// it holds, or (a shape without one: a closed shell, loose faces, IGES
+// trimmed surfaces) the solids its faces sew into, as the command line
+// makes them. For the workbench, whose objects take their solids from
+// FreeCAD's shape; InputError when there is none.
+py::dict solidsBrep(const std::string& source) {
+  Progress none{py::none()};
+  Input input;
+  std::vector<std::string> texts;
+  runWithoutGil(none, [&] {
+    input = readInput(source);
+    for (const TopoDS_Solid& solid : input.solids) {
+      std::ostringstream text;
+      BRepTools::Write(solid, text);
+      texts.push_back(text.str());
+    }
+  });
+  py::dict out;
+  py::list solids;
+  for (const std::string& t : texts) solids.append(py::str(t));
+  out["solids"] = solids;
+  out["warnings"] = toList(input.warnings);
+  return out;
+}
+
 // ---------------------------------------------------------------------------
 // Writers shared with the command line (OBJ grouped per sheet, Q-MAT .ma).
 
@@ -594,6 +621,9 @@ s, s_left, s_right), triangles (M x 3, the stitched reconstruction),
 triangle_face, spacing, warnings and report (the sampling.json dict).)");
   m.def("inspect", &inspect, py::arg("source"),
         "Per closed solid: default_spacing, area, volume, bbox_diagonal (no sampling).");
+  m.def("solids_brep", &solidsBrep, py::arg("source"),
+        "The closed solids of `source` as BREP text each, with the reading's warnings: a shape without "
+        "a solid has its faces sewn into solids, as the command line does. Raises InputError if none.");
   m.def("write_medial", &writeMedial, py::arg("path"), py::arg("format"), py::arg("vertices"), py::arg("radius"),
         py::arg("offsets"), py::arg("indices"), py::arg("sheet"),
         "Writes a medial axis as 'obj' (groups per sheet) or 'ma' (Q-MAT), atomically, in the "

@@ -265,6 +265,22 @@ def main():
     expect_error(lambda: cadmedial.add_to_document(doc, group), ValueError, "has no shape", "a group")
     expect_error(lambda: cadmedial.add_to_document(doc, "NoSuchThing"), ValueError, "no object named", "unknown name")
     check(len(doc.Objects) == count, "failed calls create no objects")
+
+    # A shape without a solid whose faces close up (a closed shell; loose
+    # faces, as an IGES file of trimmed surfaces imports) is sewn into its
+    # solid, exactly the box's: volume and the MedialAxis made from it.
+    cube = Part.makeBox(8, 6, 4)
+    closed_shell = doc.addObject("Part::Feature", "ClosedShell")
+    closed_shell.Shape = Part.makeShell(cube.Faces)
+    loose = doc.addObject("Part::Feature", "LooseFaces")
+    loose.Shape = Part.makeCompound([f.copy() for f in cube.Faces])
+    doc.recompute()
+    for obj in (closed_shell, loose):
+        check(not obj.Shape.Solids, f"{obj.Name}: the fixture holds no solid")
+        solids = document.source_solids(obj)
+        check(len(solids) == 1 and abs(solids[0].Volume - 192.0) < 1e-9, f"{obj.Name}: sewn into the 8x6x4 box")
+        (sewn_axis,) = cadmedial.add_to_document(doc, obj)
+        check(healthy(sewn_axis) and sewn_axis.Polygons > 0, f"{obj.Name}: MedialAxis from the sewn solid")
     expect_error(lambda: cadmedial.compute(face.Shape), cadmedial.InputError, "no closed solid", "compute(face)")
     expect_error(lambda: cadmedial.compute("/no/such/file.step"), cadmedial.InputError, "no such file", "missing file")
     expect_error(lambda: cadmedial.compute(os.path.join(source_dir, "README.md")), ValueError, "unknown extension",
