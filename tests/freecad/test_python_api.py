@@ -66,6 +66,11 @@ def main():
     check(samples.points.shape[1] == 3 and samples.triangles.shape[1] == 3 and samples.triplets.shape[1] == 3,
           repr(samples))
     check(samples.report["reconstruction"]["surface"]["closed_manifold"], "box reconstruction closed")
+    made = cadmedial.solids_brep(os.path.join(models, "box.step"))
+    check(len(made["solids"]) == 1 and made["solids"][0].lstrip().startswith("CASCADE Topology") and not made["warnings"],
+          "solids_brep: the box file's one solid as BREP text")
+    box_text = made["solids"][0]
+    check(len(cadmedial.solids_brep(box_text)["solids"]) == 1, "solids_brep: BREP text in, the same solid out")
     # Graded spacing is the default and reaches the sampler: recorded, and on
     # the lever (public, when ../shared is there) far fewer samples than one
     # spacing per face (graded_spacing=False).
