@@ -2,15 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 #include <BRepBndLib.hxx>
-#include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepCheck_Analyzer.hxx>
 #include <BRepCheck_Shell.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepGProp.hxx>
-#include <BRepLib.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
@@ -25,41 +25,16 @@ namespace cadmedial {
 
 namespace {
 
-// A closed shell with the solid it bounds on its own (oriented outward).
+// A closed shell oriented so that the matter is inside it, and its solid alone.
 struct ClosedShell {
-  TopoDS_Shell shell;
+  TopoDS_Shape shell;  // with the orientation it has in `alone`
   TopoDS_Solid alone;
-  double volume = 0;
+  double volume = 0;   // > 0
+  Bnd_Box box;
+  bool valid = false;  // BRepCheck accepts `alone` (the classifier is asked only of those)
   int container = -1;  // the smallest other shell enclosing it
   int depth = 0;       // how many shells enclose it
 };
-
-bool isClosed(const TopoDS_Shell& shell) {
-  try {
-    return BRepCheck_Shell(shell).Closed() == BRepCheck_NoError;
-  } catch (const Standard_Failure&) {
-    return false;
-  }
-}
-
-// The solid a closed shell bounds, with matter inside it; null if OCCT cannot orient it.
-TopoDS_Solid solidOf(const TopoDS_Shell& shell) {
-  try {
-    BRepBuilderAPI_MakeSolid make(shell);
-    if (!make.IsDone()) return {};
-    TopoDS_Solid solid = make.Solid();
-    if (!BRepLib::OrientClosedSolid(solid)) return {};
-    return solid;
-  } catch (const Standard_Failure&) {
-    return {};
-  }
-}
-
-// The shell of a one-shell solid, with the orientation it has in it.
-TopoDS_Shape orientedShell(const TopoDS_Solid& solid) {
-  TopExp_Explorer e(solid, TopAbs_SHELL);
-  return e.Current();
-}
 
 double volumeOf(const TopoDS_Shape& solid) {
   GProp_GProps props;
@@ -67,17 +42,98 @@ double volumeOf(const TopoDS_Shape& solid) {
   return props.Mass();
 }
 
-// Whether shell a lies inside the solid of shell b: one of a's vertices is
-// strictly inside (shells from one sewing do not cross; a vertex on b's
-// surface, where they touch, does not count).
-bool inside(const ClosedShell& a, const ClosedShell& b, double tolerance) {
-  BRepClass3d_SolidClassifier classifier(b.alone);
-  for (TopExp_Explorer v(a.shell, TopAbs_VERTEX); v.More(); v.Next()) {
-    classifier.Perform(BRep_Tool::Pnt(TopoDS::Vertex(v.Current())), tolerance);
-    if (classifier.State() == TopAbs_IN) return true;
-    if (classifier.State() == TopAbs_OUT) return false;
+// The solid a shell bounds, oriented by the sign of its volume (a closed,
+// consistently oriented shell's volume is the enclosed volume, negative
+// when the faces point inward), or null when the shell is open, its faces
+// are not oriented alike, or it encloses nothing.
+TopoDS_Solid solidOf(const TopoDS_Shell& shell) {
+  try {
+    BRepCheck_Shell check(shell);
+    if (check.Closed() != BRepCheck_NoError || check.Orientation() != BRepCheck_NoError) return {};
+    BRep_Builder builder;
+    TopoDS_Solid solid;
+    builder.MakeSolid(solid);
+    builder.Add(solid, shell);
+    const double volume = volumeOf(solid);
+    if (!std::isfinite(volume) || volume == 0) return {};
+    if (volume < 0) solid.Reverse();
+    return solid;
+  } catch (const Standard_Failure&) {
+    return {};
   }
-  return false;
+}
+
+// The shells of a sewing's result. A face that joins no other is left
+// outside any shell; one closed by itself (a sphere, a torus) is a shell of
+// one face.
+std::vector<TopoDS_Shell> shellsOf(const TopoDS_Shape& sewn) {
+  std::vector<TopoDS_Shell> shells;
+  for (TopExp_Explorer s(sewn, TopAbs_SHELL); s.More(); s.Next()) shells.push_back(TopoDS::Shell(s.Current()));
+  for (TopExp_Explorer f(sewn, TopAbs_FACE, TopAbs_SHELL); f.More(); f.Next()) {
+    BRep_Builder builder;
+    TopoDS_Shell shell;
+    builder.MakeShell(shell);
+    builder.Add(shell, f.Current());
+    shells.push_back(shell);
+  }
+  return shells;
+}
+
+struct Pass {
+  std::vector<ClosedShell> closed;
+  int openShells = 0;
+};
+
+Pass sewAt(const TopoDS_Shape& shape, double tolerance) {
+  Pass pass;
+  BRepBuilderAPI_Sewing sewing(tolerance);
+  for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) sewing.Add(f.Current());
+  sewing.Perform();
+  for (const TopoDS_Shell& shell : shellsOf(sewing.SewedShape())) {
+    const TopoDS_Solid solid = solidOf(shell);
+    if (solid.IsNull()) {
+      ++pass.openShells;
+      continue;
+    }
+    ClosedShell c;
+    c.alone = solid;
+    c.shell = TopExp_Explorer(solid, TopAbs_SHELL).Current();
+    c.volume = std::abs(volumeOf(solid));
+    BRepBndLib::Add(solid, c.box);
+    try {
+      c.valid = BRepCheck_Analyzer(solid).IsValid();
+    } catch (const Standard_Failure&) {
+      c.valid = false;
+    }
+    pass.closed.push_back(c);
+  }
+  return pass;
+}
+
+bool boxInside(const Bnd_Box& a, const Bnd_Box& b) {
+  double a0[3], a1[3], b0[3], b1[3];
+  a.Get(a0[0], a0[1], a0[2], a1[0], a1[1], a1[2]);
+  b.Get(b0[0], b0[1], b0[2], b1[0], b1[1], b1[2]);
+  for (int k = 0; k < 3; ++k)
+    if (a0[k] < b0[k] || a1[k] > b1[k]) return false;
+  return true;
+}
+
+// Whether shell a lies inside the solid of shell b: its box inside b's,
+// and every vertex of a that is not on b's surface (where they touch)
+// inside b, at least one of them. Shells that cross (overlapping bodies of
+// a surface model) are not nested. Only asked of solids BRepCheck accepts
+// (the classifier can hang on others).
+bool nestedIn(const ClosedShell& a, const ClosedShell& b, BRepClass3d_SolidClassifier& inB, double tolerance) {
+  if (!a.valid || !b.valid || !(b.volume > a.volume) || !boxInside(a.box, b.box)) return false;
+  bool anyIn = false;
+  for (TopExp_Explorer v(a.shell, TopAbs_VERTEX); v.More(); v.Next()) {
+    inB.Perform(BRep_Tool::Pnt(TopoDS::Vertex(v.Current())), tolerance);
+    const TopAbs_State state = inB.State();
+    if (state == TopAbs_IN) anyIn = true;
+    else if (state != TopAbs_ON) return false;
+  }
+  return anyIn;
 }
 
 }  // namespace
@@ -86,99 +142,81 @@ std::vector<TopoDS_Solid> solidsSewnFromFaces(const TopoDS_Shape& shape, SewingO
   SewingOutcome local;
   SewingOutcome& out = outcome ? *outcome : local;
   out = SewingOutcome{};
-  Bnd_Box box;
-  for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
-    ++out.faces;
-    BRepBndLib::Add(f.Current(), box);
-  }
-  if (out.faces == 0 || box.IsVoid()) return {};
-  const double diagonal = std::sqrt(box.SquareExtent());
-  out.tried = true;
-
-  std::vector<ClosedShell> closed;
-  for (double fraction : {1e-6, 1e-4}) {
-    out.tolerance = fraction * diagonal;
-    closed.clear();
-    out.openShells = 0;
-    try {
-      BRepBuilderAPI_Sewing sewing(out.tolerance);
-      for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) sewing.Add(f.Current());
-      sewing.Perform();
-      const TopoDS_Shape sewn = sewing.SewedShape();
-      std::vector<TopoDS_Shell> shells;
-      for (TopExp_Explorer s(sewn, TopAbs_SHELL); s.More(); s.Next()) shells.push_back(TopoDS::Shell(s.Current()));
-      // The sewing leaves a face that joins no other on its own, outside any
-      // shell; one closed by itself (a sphere, a torus) is a shell of one face.
-      for (TopExp_Explorer f(sewn, TopAbs_FACE, TopAbs_SHELL); f.More(); f.Next()) {
-        BRep_Builder builder;
-        TopoDS_Shell shell;
-        builder.MakeShell(shell);
-        builder.Add(shell, f.Current());
-        shells.push_back(shell);
-      }
-      for (const TopoDS_Shell& shell : shells) {
-        const TopoDS_Solid solid = isClosed(shell) ? solidOf(shell) : TopoDS_Solid();
-        if (solid.IsNull()) {
-          ++out.openShells;
-          continue;
-        }
-        closed.push_back({shell, solid, std::abs(volumeOf(solid))});
-      }
-    } catch (const Standard_Failure&) {
-      closed.clear();
+  try {
+    Bnd_Box box;
+    for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
+      ++out.faces;
+      BRepBndLib::Add(f.Current(), box);
     }
-    if (!closed.empty()) break;
-  }
-  out.closedShells = static_cast<int>(closed.size());
-  if (closed.empty()) return {};
+    if (out.faces == 0 || box.IsVoid() || box.IsOpen()) return {};  // nothing to sew, or unbounded faces
+    const double diagonal = std::sqrt(box.SquareExtent());
+    if (!std::isfinite(diagonal) || !(diagonal > 0)) return {};
+    out.tried = true;
 
-  // Nesting: a shell's container is the smallest shell around it; shells at
-  // odd depth are voids of their container (at even depth, a solid of their
-  // own inside a void). Quadratic in the shells, which are few; past 100
-  // each closed shell is taken as a solid of its own.
-  if (closed.size() <= 100) {
-    for (std::size_t a = 0; a < closed.size(); ++a)
-      for (std::size_t b = 0; b < closed.size(); ++b) {
-        if (a == b || !(closed[b].volume > closed[a].volume) || !inside(closed[a], closed[b], out.tolerance)) continue;
+    // The finer tolerance first; the coarser one when shells stay open
+    // there, keeping the pass that leaves fewer open (a sphere face closes
+    // by itself at any tolerance while the rest may need the coarser one).
+    Pass best;
+    for (double fraction : {1e-6, 1e-4}) {
+      const double tolerance = fraction * diagonal;
+      Pass pass;
+      try {
+        pass = sewAt(shape, tolerance);
+      } catch (const Standard_Failure&) {
+        continue;
+      }
+      if (out.tolerance == 0 || pass.openShells < best.openShells ||
+          (pass.openShells == best.openShells && pass.closed.size() > best.closed.size())) {
+        best = std::move(pass);
+        out.tolerance = tolerance;
+      }
+      if (best.openShells == 0 && !best.closed.empty()) break;
+    }
+    std::vector<ClosedShell>& closed = best.closed;
+    out.closedShells = static_cast<int>(closed.size());
+    out.openShells = best.openShells;
+    if (closed.empty()) return {};
+
+    // Nesting: a shell's container is the smallest shell around it, its
+    // depth how many enclose it. Odd depth: a void of its container; even
+    // depth: a solid of its own (inside a void, or outside everything).
+    for (std::size_t b = 0; b < closed.size(); ++b) {
+      std::unique_ptr<BRepClass3d_SolidClassifier> inB;  // built once, only when some box fits in b's
+      for (std::size_t a = 0; a < closed.size(); ++a) {
+        if (a == b || !closed[a].valid || !closed[b].valid || !(closed[b].volume > closed[a].volume) ||
+            !boxInside(closed[a].box, closed[b].box))
+          continue;
+        if (!inB) inB = std::make_unique<BRepClass3d_SolidClassifier>(closed[b].alone);
+        if (!nestedIn(closed[a], closed[b], *inB, out.tolerance)) continue;
         ++closed[a].depth;
         if (closed[a].container < 0 || closed[b].volume < closed[closed[a].container].volume)
           closed[a].container = static_cast<int>(b);
       }
-  }
-  std::vector<TopoDS_Solid> solids;
-  for (std::size_t a = 0; a < closed.size(); ++a) {
-    if (closed[a].depth % 2 == 1) continue;  // a void, added to its container below
-    std::vector<std::size_t> voids;
-    for (std::size_t b = 0; b < closed.size(); ++b)
-      if (closed[b].depth % 2 == 1 && closed[b].container == static_cast<int>(a)) voids.push_back(b);
-    if (voids.empty()) {
-      solids.push_back(closed[a].alone);
-      continue;
     }
-    // The outer shell as its solid alone orients it, each void's the other
-    // way round (matter outside it); kept when the volume says both agree.
-    try {
+    // A void needs a container one level up; an inconsistent nesting (the
+    // container's depth is not one less) leaves the shell a solid of its own.
+    auto isVoid = [&](std::size_t a) {
+      const int c = closed[a].container;
+      return closed[a].depth % 2 == 1 && c >= 0 && closed[c].depth == closed[a].depth - 1;
+    };
+    std::vector<TopoDS_Solid> solids;
+    for (std::size_t a = 0; a < closed.size(); ++a) {
+      if (isVoid(a)) continue;  // added to its container below
       BRep_Builder builder;
       TopoDS_Solid solid;
       builder.MakeSolid(solid);
-      builder.Add(solid, orientedShell(closed[a].alone));
-      double volume = closed[a].volume;
-      for (std::size_t b : voids) {
-        builder.Add(solid, orientedShell(closed[b].alone).Reversed());
-        volume -= closed[b].volume;
-      }
-      if (std::abs(volumeOf(solid) - volume) <= 1e-6 * closed[a].volume) {
-        solids.push_back(solid);
-        out.voids += static_cast<int>(voids.size());
-        continue;
-      }
-    } catch (const Standard_Failure&) {
+      builder.Add(solid, closed[a].shell);
+      for (std::size_t b = 0; b < closed.size(); ++b)
+        if (isVoid(b) && closed[b].container == static_cast<int>(a)) {
+          builder.Add(solid, closed[b].shell.Reversed());  // matter outside it
+          ++out.voids;
+        }
+      solids.push_back(solid);
     }
-    // Not orientable with its voids: the outer shell alone, voids as solids.
-    solids.push_back(closed[a].alone);
-    for (std::size_t b : voids) solids.push_back(closed[b].alone);
+    return solids;
+  } catch (const Standard_Failure&) {
+    return {};
   }
-  return solids;
 }
 
 std::string describeSewing(const SewingOutcome& o) {

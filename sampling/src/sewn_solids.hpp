@@ -20,10 +20,13 @@ struct SewingOutcome {
   int voids = 0;          // closed shells inside another, made its void
 };
 
-// Sews every face of the shape, at 1e-6 and then (if no shell closed)
-// 1e-4 of the faces' bounding-box diagonal, and makes a solid of each
-// closed shell, outward oriented; a closed shell inside another becomes
-// that solid's void. The solids are not checked further here.
+// Sews every face of the shape at 1e-6 of the faces' bounding-box diagonal,
+// and at 1e-4 when shells stay open there (the pass leaving fewer open is
+// kept), and makes a solid of each closed, consistently oriented shell,
+// matter inside. A closed shell inside another (box inside, every vertex
+// not on it inside) becomes that solid's void; shells that cross stay
+// solids of their own. Nothing here throws; an empty result when no shell
+// closes. The solids are not checked further here.
 std::vector<TopoDS_Solid> solidsSewnFromFaces(const TopoDS_Shape& shape, SewingOutcome* outcome);
 
 // One clause for messages: "sewn at tolerance T: N face(s) closed M shell(s), K left open".

@@ -136,6 +136,29 @@ TEST_F(SewnFaces, AClosedShellInsideAnotherIsItsVoid) {
   EXPECT_EQ(shells, 2);
 }
 
+TEST_F(SewnFaces, InwardFacesAndOverlappingBodiesGiveTheirOwnSolids) {
+  // The box's faces all reversed (normals inward): still the box, matter inside.
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(40, 30, 20).Shape();
+  const LoadedModel inward = loadModel(writeBrep(looseFaces(box.Reversed()), "inward.brep"));
+  ASSERT_EQ(inward.solids.size(), 1u);
+  EXPECT_NEAR(volumeOf(inward.solids[0]), 24000, 1e-6);
+  EXPECT_EQ(stateOf(inward.solids[0], gp_Pnt(20, 15, 10)), TopAbs_IN);
+
+  // Two boxes that overlap (a surface model of two bodies crossing): two
+  // solids, neither made the other's void (a corner of the small one is
+  // inside the big one, others are outside).
+  const TopoDS_Shape big = BRepPrimAPI_MakeBox(40, 30, 20).Shape();
+  const TopoDS_Shape small = BRepPrimAPI_MakeBox(gp_Pnt(30, 20, 10), 20, 20, 20).Shape();
+  BRep_Builder builder;
+  TopoDS_Compound both;
+  builder.MakeCompound(both);
+  builder.Add(both, looseFaces(big));
+  builder.Add(both, looseFaces(small));
+  const LoadedModel crossing = loadModel(writeBrep(both, "crossing.brep"));
+  ASSERT_EQ(crossing.solids.size(), 2u);
+  EXPECT_NEAR(volumeOf(crossing.solids[0]) + volumeOf(crossing.solids[1]), 24000 + 8000, 1e-6);
+}
+
 TEST_F(SewnFaces, FacesThatDoNotCloseAreStillNoSolid) {
   const TopoDS_Shape box = BRepPrimAPI_MakeBox(40, 30, 20).Shape();
   const std::string path = writeBrep(looseFaces(box, 0), "open_box.brep");
