@@ -119,6 +119,31 @@ TEST_F(SewnFaces, IgesTrimmedSurfacesBecomeTheSolid) {
   EXPECT_NE(text.find("sewn at tolerance"), std::string::npos) << text;
 }
 
+TEST_F(SewnFaces, ABundledPartWrittenAsIgesSurfacesComesBackWhole) {
+  // The flange (cylinders, fillets, holes) as FreeCAD's IGES export writes
+  // any part: trimmed surfaces only. Sewn, it is the STEP flange again:
+  // same volume and area, valid.
+  const LoadedModel step = loadModel(std::string(CADMEDIAL_MODELS_DIR) + "/flange.step");
+  ASSERT_EQ(step.solids.size(), 1u);
+  IGESControl_Controller::Init();
+  IGESControl_Writer writer("MM", 0);
+  ASSERT_TRUE(writer.AddShape(step.solids[0]));
+  writer.ComputeModel();
+  const std::string path = (dir_ / "flange_faces.igs").string();
+  ASSERT_TRUE(writer.Write(path.c_str()));
+
+  const LoadedModel iges = loadModel(path);
+  EXPECT_EQ(iges.census.solids, 0);
+  ASSERT_EQ(iges.solids.size(), 1u);
+  EXPECT_TRUE(BRepCheck_Analyzer(iges.solids[0]).IsValid());
+  const double volume = volumeOf(step.solids[0]);
+  EXPECT_NEAR(volumeOf(iges.solids[0]), volume, 1e-6 * volume);
+  GProp_GProps a, b;
+  BRepGProp::SurfaceProperties(step.solids[0], a);
+  BRepGProp::SurfaceProperties(iges.solids[0], b);
+  EXPECT_NEAR(b.Mass(), a.Mass(), 1e-6 * a.Mass());
+}
+
 TEST_F(SewnFaces, AClosedShellInsideAnotherIsItsVoid) {
   const TopoDS_Shape box = BRepPrimAPI_MakeBox(40, 30, 20).Shape();
   const TopoDS_Shape ball = BRepPrimAPI_MakeSphere(gp_Pnt(20, 15, 10), 6).Shape();
