@@ -203,8 +203,6 @@ def sewn_solids(source, shape):
         solid = Part.Shape()
         solid.importBrepFromString(text)
         solids.extend(solid.Solids)
-    if not solids:
-        raise ValueError(describe_non_solid(source, shape))
     return solids
 
 

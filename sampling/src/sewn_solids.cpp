@@ -31,7 +31,7 @@ struct ClosedShell {
   TopoDS_Solid alone;
   double volume = 0;   // > 0
   Bnd_Box box;
-  bool valid = false;  // BRepCheck accepts `alone` (the classifier is asked only of those)
+  int valid = -1;      // BRepCheck accepts `alone` (1) or not (0), asked only of shells whose box nests
   int container = -1;  // the smallest other shell enclosing it
   int depth = 0;       // how many shells enclose it
 };
@@ -100,11 +100,6 @@ Pass sewAt(const TopoDS_Shape& shape, double tolerance) {
     c.shell = TopExp_Explorer(solid, TopAbs_SHELL).Current();
     c.volume = std::abs(volumeOf(solid));
     BRepBndLib::Add(solid, c.box);
-    try {
-      c.valid = BRepCheck_Analyzer(solid).IsValid();
-    } catch (const Standard_Failure&) {
-      c.valid = false;
-    }
     pass.closed.push_back(c);
   }
   return pass;
@@ -119,13 +114,28 @@ bool boxInside(const Bnd_Box& a, const Bnd_Box& b) {
   return true;
 }
 
-// Whether shell a lies inside the solid of shell b: its box inside b's,
-// and every vertex of a that is not on b's surface (where they touch)
-// inside b, at least one of them. Shells that cross (overlapping bodies of
-// a surface model) are not nested. Only asked of solids BRepCheck accepts
-// (the classifier can hang on others).
-bool nestedIn(const ClosedShell& a, const ClosedShell& b, BRepClass3d_SolidClassifier& inB, double tolerance) {
-  if (!a.valid || !b.valid || !(b.volume > a.volume) || !boxInside(a.box, b.box)) return false;
+// Whether BRepCheck accepts a shell's solid (the classifier can hang on
+// others), asked once and only of shells in a nesting test.
+bool isValid(ClosedShell& c) {
+  if (c.valid < 0) {
+    try {
+      c.valid = BRepCheck_Analyzer(c.alone).IsValid() ? 1 : 0;
+    } catch (const Standard_Failure&) {
+      c.valid = 0;
+    }
+  }
+  return c.valid == 1;
+}
+
+// Whether shell a may lie inside shell b: smaller, its box inside b's, both solids valid.
+bool mayNest(ClosedShell& a, ClosedShell& b) {
+  return b.volume > a.volume && boxInside(a.box, b.box) && isValid(a) && isValid(b);
+}
+
+// Whether every vertex of a that is not on b's surface (where they touch)
+// is inside b, at least one of them: shells that cross (overlapping bodies
+// of a surface model) are not nested.
+bool verticesInside(const ClosedShell& a, BRepClass3d_SolidClassifier& inB, double tolerance) {
   bool anyIn = false;
   for (TopExp_Explorer v(a.shell, TopAbs_VERTEX); v.More(); v.Next()) {
     inB.Perform(BRep_Tool::Pnt(TopoDS::Vertex(v.Current())), tolerance);
@@ -183,11 +193,9 @@ std::vector<TopoDS_Solid> solidsSewnFromFaces(const TopoDS_Shape& shape, SewingO
     for (std::size_t b = 0; b < closed.size(); ++b) {
       std::unique_ptr<BRepClass3d_SolidClassifier> inB;  // built once, only when some box fits in b's
       for (std::size_t a = 0; a < closed.size(); ++a) {
-        if (a == b || !closed[a].valid || !closed[b].valid || !(closed[b].volume > closed[a].volume) ||
-            !boxInside(closed[a].box, closed[b].box))
-          continue;
+        if (a == b || !mayNest(closed[a], closed[b])) continue;
         if (!inB) inB = std::make_unique<BRepClass3d_SolidClassifier>(closed[b].alone);
-        if (!nestedIn(closed[a], closed[b], *inB, out.tolerance)) continue;
+        if (!verticesInside(closed[a], *inB, out.tolerance)) continue;
         ++closed[a].depth;
         if (closed[a].container < 0 || closed[b].volume < closed[closed[a].container].volume)
           closed[a].container = static_cast<int>(b);

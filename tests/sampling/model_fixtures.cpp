@@ -1,5 +1,7 @@
 #include "model_fixtures.hpp"
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -53,5 +55,13 @@ std::vector<std::string> publicModels(const std::string& tag) {
   }
   return files;
 }
+
+void ScratchDirTest::SetUp() {
+  const std::string suite = ::testing::UnitTest::GetInstance()->current_test_info()->test_suite_name();
+  dir_ = std::filesystem::temp_directory_path() / ("cadmedial_" + suite + "_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir_);
+}
+
+void ScratchDirTest::TearDown() { std::filesystem::remove_all(dir_); }
 
 }  // namespace cadmedial::test

@@ -1,8 +1,11 @@
 // Bundled and public models for tests, and their expected properties.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
@@ -19,5 +22,14 @@ const nlohmann::json& bundledModel(const std::string& name);
 std::string publicModelsDir();
 // File names of MANIFEST.tsv rows whose notes contain `tag` (e.g. "set=dev").
 std::vector<std::string> publicModels(const std::string& tag);
+
+// A test with its own empty folder (dir_) under the system's temporary one,
+// named after the suite and the process, removed after the test.
+class ScratchDirTest : public ::testing::Test {
+ protected:
+  void SetUp() override;
+  void TearDown() override;
+  std::filesystem::path dir_;
+};
 
 }  // namespace cadmedial::test

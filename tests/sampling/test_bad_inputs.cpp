@@ -32,13 +32,8 @@ namespace cadmedial {
 namespace {
 namespace fs = std::filesystem;
 
-class BadInputs : public ::testing::Test {
+class BadInputs : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cadmedial_bad_inputs_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::string write(const std::string& name, const std::string& content) {
     const fs::path p = dir_ / name;
     std::ofstream(p, std::ios::binary) << content;
@@ -73,7 +68,6 @@ class BadInputs : public ::testing::Test {
     }
     return kExitOk;
   }
-  fs::path dir_;
 };
 
 TEST_F(BadInputs, MissingEmptyTextAndTruncatedFilesAreUnreadable) {

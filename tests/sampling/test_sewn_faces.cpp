@@ -32,18 +32,14 @@
 
 #include "cadmedial/brep_io.hpp"
 #include "cadmedial/errors.hpp"
+#include "model_fixtures.hpp"
 
 namespace cadmedial {
 namespace {
 namespace fs = std::filesystem;
 
-class SewnFaces : public ::testing::Test {
+class SewnFaces : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cadmedial_sewn_faces_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   // The faces of a shape, each copied on its own (no edge shared any more,
   // as in a file of trimmed surfaces), in a compound; `skip` leaves one out.
   static TopoDS_Compound looseFaces(const TopoDS_Shape& shape, int skip = -1) {
@@ -74,7 +70,6 @@ class SewnFaces : public ::testing::Test {
       if (w.find("sewn at tolerance") != std::string::npos) return true;
     return false;
   }
-  fs::path dir_;
 };
 
 TEST_F(SewnFaces, LooseFacesOfABoxBecomeTheBox) {
