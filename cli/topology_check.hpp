@@ -15,8 +15,8 @@
 
 namespace cadmedial {
 
-// One line for a warning, empty when β0 and β1 match (or β1 of either is
-// unknown and β0 matches). `spacing` is the h used: the line suggests h / 2
+// One line for a warning, empty when β0, β1 and β2 match (or β1 of either
+// is unknown and β0 matches). `spacing` is the h used: the line suggests h / 2
 // (--spacing in the CLI, spacing= in Python).
 std::string topologyMismatchWarning(const ComplexTopology& axis, const SolidBetti& solid, double spacing);
 

@@ -129,7 +129,13 @@ std::vector<std::vector<LoopPoint>> boundaryLoops(const SamplingContext& ctx, co
       loop.insert(loop.end(), pts.begin() + start, pts.end());
     }
     if (loop.size() > 1 && loop.front().sample == loop.back().sample) loop.pop_back();
-    if (loop.size() >= 3) loops.push_back(std::move(loop));
+    // A loop of one or two samples bounds nothing the triangulation can
+    // follow: the face would lose its hole, or have no triangle at all.
+    // minimumEdgeSegments prevents it; a wire of degenerate edges only
+    // (a face squeezed to a point) still ends here.
+    if (loop.size() < 3)
+      throw std::runtime_error("a boundary loop has only " + std::to_string(loop.size()) + " sample(s)");
+    loops.push_back(std::move(loop));
   }
   return loops;
 }
@@ -332,6 +338,7 @@ FaceMesh reconstructFace(const SamplingContext& ctx, const SampleSet& set, int f
       hint = vh->face();
       if (vh->info().id == kNoIndex) vh->info().id = interior[k];
     }
+    if (cdt.dimension() < 2) throw std::runtime_error("its samples do not span an area in UV");
     markDomains(cdt);
     out.flippedEdges = flipTrianglesOffTheSurface(cdt, surf, set, su, sv);
     const double tolerance = faceTolerance(face);

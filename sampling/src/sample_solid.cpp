@@ -101,6 +101,30 @@ void warnAboutUnresolvedWalls(const SamplingContext& ctx, const SamplingParams& 
   report.warnings.push_back(message.str());
 }
 
+// An edge curved tighter than the finest spacing can follow (eight chords
+// a turn, 0.77 × its radius, below h × minSpacingFraction): a pin or a hole
+// of radius 0.05 on a 200 mm part. Its faces are sampled by their boundary
+// only and can come out flat (the two halves of a pin's side on one strip),
+// and the axis there is approximate, often with an island or a loop too
+// many. Said once per solid, with the tightest edge and a spacing that
+// follows it.
+void warnAboutUnresolvedCurves(const SamplingContext& ctx, const SamplingParams& params, SamplingReport& report) {
+  constexpr double kChordFraction = 0.8;  // ≥ 8 chords a full turn
+  const double fraction = kChordFraction * ctx.boundsScale;
+  if (!(fraction * ctx.tightestEdgeRadius < ctx.minSpacing)) return;
+  const double radius = ctx.tightestEdgeRadius;
+  const gp_Pnt& at = ctx.tightestEdgeAt;
+  const double needed = fraction * radius / params.minSpacingFraction;
+  const double thirdDigit = std::pow(10.0, std::floor(std::log10(needed)) - 2);
+  std::ostringstream message;
+  message << std::setprecision(3) << "an edge curved to radius " << radius << " at (" << std::setprecision(7)
+          << at.X() << ", " << at.Y() << ", " << at.Z() << std::setprecision(3)
+          << ") is tighter than the finest spacing " << ctx.minSpacing << " can follow (it needs "
+          << fraction * radius << "): the axis there is approximate; --spacing "
+          << std::floor(needed / thirdDigit) * thirdDigit << " or finer follows it";
+  report.warnings.push_back(message.str());
+}
+
 }  // namespace
 
 double defaultSpacing(const TopoDS_Shape& solid) {
@@ -150,6 +174,7 @@ SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& param
 
   computeSpacings(ctx);
   warnAboutUnresolvedWalls(ctx, params, report);
+  warnAboutUnresolvedCurves(ctx, params, report);
   // The builder's hash cell follows the largest spacing actually used, not
   // the global target: every exclusion radius is at most ~that, and on thin
   // walls (face spacing 0.4 x thickness << h) cells of size h held hundreds

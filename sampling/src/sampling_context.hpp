@@ -5,6 +5,7 @@
 #include <array>
 #include <vector>
 
+#include <gp_Pnt.hxx>
 #include <gp_Pnt2d.hxx>
 
 #include "cadmedial/sample_set.hpp"
@@ -31,6 +32,8 @@ struct SamplingContext {
   // Per edge: (arc length from its first vertex, spacing) along it where the
   // spacing varies (graded faces finer near one end); empty: even at edgeSpacing.
   std::vector<std::vector<std::array<double, 2>>> edgeSpacingAlong;
+  double tightestEdgeRadius = 1e300;  // smallest radius of curvature found on an edge (computeSpacings)
+  gp_Pnt tightestEdgeAt;              // where
   std::vector<double> cornerRadius;  // per vertex: corner-ball radius (0: no ball)
   std::vector<Index> vertexSample;   // per vertex: its sample
   std::vector<std::vector<double>> edgeParams;  // per edge: curve parameter of each sample in SampleSet::edges[e].samples

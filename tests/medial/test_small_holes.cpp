@@ -91,7 +91,7 @@ INSTANTIATE_TEST_SUITE_P(Plates, SmallHole,
                                   std::to_string(static_cast<int>(std::get<1>(info.param) * 10)) + "_tenths";
                          });
 
-// `cadmedial run` warns when the axis's β0, β1 differ from the solid's
+// `cadmedial run` warns when the axis's β0, β1 or β2 differ from the solid's
 // (β1 of a complex too large for the exact rank is -1: then β0 alone).
 TEST(TopologyCheck, AnAxisWhoseTopologyDiffersFromTheSolidsIsWarnedAbout) {
   SolidBetti plate;  // a plate with one hole
@@ -118,6 +118,16 @@ TEST(TopologyCheck, AnAxisWhoseTopologyDiffersFromTheSolidsIsWarnedAbout) {
   axis.beta0 = 1;
   axis.beta1 = 4;
   EXPECT_EQ(topologyMismatchWarning(axis, unknown, 3.5), "");
+  SolidBetti hollow;  // a box with a small spherical void
+  hollow.shells = 2;
+  hollow.beta2 = 1;
+  axis.beta0 = 1;
+  axis.beta1 = 0;
+  axis.beta2 = 1;
+  EXPECT_EQ(topologyMismatchWarning(axis, hollow, 3.5), "");
+  axis.beta2 = 2;  // a second bubble around the void
+  EXPECT_NE(topologyMismatchWarning(axis, hollow, 3.5).find("beta0,beta1,beta2 1,0,2 where the solid has 1,0,1"),
+            std::string::npos);
 }
 
 }  // namespace
