@@ -185,25 +185,60 @@ def source_solids(source):
     return sewn_solids(source, shape)
 
 
+# Sewn solids by the BREP digest of the shape sewn: (BREP texts, warnings).
+# The task panel, the commands and each recompute ask for a source's solids
+# again; an IGES part of a few hundred faces takes OCCT's sewing a good
+# fraction of a second each time.
+_SEWN = collections.OrderedDict()
+_SEWN_KEEP = 8
+
+
+def _sew(shape):
+    key = hashlib.sha1(shape.exportBrepToString().encode()).hexdigest()
+    if key in _SEWN:
+        _SEWN.move_to_end(key)
+        return _SEWN[key]
+    made = api.solids_brep(shape)
+    _SEWN[key] = (list(made["solids"]), [str(w) for w in made["warnings"]])
+    while len(_SEWN) > _SEWN_KEEP:
+        _SEWN.popitem(last=False)
+    return _SEWN[key]
+
+
 def sewn_solids(source, shape):
     """The solids the faces of a shape without one sew into (a closed shell,
     an imported IGES file's trimmed surfaces), made by the native module as
     `cadmedial run` makes them; ValueError saying what is left open when
-    none closes. Sewing again on each call gives the same solids."""
+    none closes. The same shape is sewn once (its solids are remembered)."""
     import Part
 
     try:
-        made = api.solids_brep(shape)
+        texts, _ = _sew(shape)
     except api.InputError as e:
         sewing = str(e).rsplit("; ", 1)[-1]  # the native message ends with what the sewing did
         detail = f" (its faces, {sewing})" if sewing.startswith("sewn at") else ""
         raise ValueError(describe_non_solid(source, shape) + detail) from None
     solids = []
-    for text in made["solids"]:
+    for text in texts:
         solid = Part.Shape()
         solid.importBrepFromString(text)
         solids.extend(solid.Solids)
     return solids
+
+
+def source_warnings(source):
+    """What reading a source's shape had to say: the sewing of a shape
+    without a solid (what was sewn, at which tolerance), as `cadmedial run`
+    warns; [] for a shape with solids, points or a mesh."""
+    if is_point_object(source) or "Shape" not in getattr(source, "PropertiesList", []):
+        return []
+    shape = source_shape(source)
+    if shape is None or shape.isNull() or not shape.Faces or shape.Solids:
+        return []
+    try:
+        return list(_sew(shape)[1])
+    except api.InputError:
+        return []
 
 
 def source_solid(source, index):
@@ -382,6 +417,7 @@ class MedialAxisFeature(FeatureProxy):
         if is_point_object(obj.Source):
             return self.execute_points(obj)
         solid = source_solid(obj.Source, obj.SolidIndex)
+        reading = source_warnings(obj.Source)
         spacing, theta, rho = float(obj.Spacing.Value), float(obj.Theta.Value), float(obj.Rho)
         brep = solid.exportBrepToString()
         graded = bool(obj.GradedSpacing)
@@ -403,8 +439,8 @@ class MedialAxisFeature(FeatureProxy):
             remember_result(signature, result)
         if signature != obj.InputSignature or not obj.ResultData:
             self.store(obj, result, signature)
-        self.apply(obj, result)
-        for w in result.warnings if fresh else []:
+        self.apply(obj, result, reading)
+        for w in reading + result.warnings if fresh else []:
             App.Console.PrintWarning(f"{obj.Label}: {w}\n")
 
     def execute_points(self, obj):
@@ -437,7 +473,8 @@ class MedialAxisFeature(FeatureProxy):
             os.remove(path)
         obj.InputSignature = signature
 
-    def apply(self, obj, result):
+    def apply(self, obj, result, reading=()):
+        """Shows a result; `reading`: the source's own warnings (its sewing)."""
         tri, _ = result.triangles()
         obj.Mesh = _mesh(result.vertices, tri)
         obj.Samples = result.samples
@@ -452,7 +489,7 @@ class MedialAxisFeature(FeatureProxy):
         obj.OracleDisagreements = (
             int(diagnostics.get("walk_oracle_disagreements", -1)) if obj.CheckInside else -1
         )
-        obj.Warnings = [str(w) for w in result.warnings]
+        obj.Warnings = [str(w) for w in list(reading) + list(result.warnings)]
         self.apply_colors(obj, result)
 
     def apply_colors(self, obj, result):

@@ -281,6 +281,23 @@ def main():
         check(len(solids) == 1 and abs(solids[0].Volume - 192.0) < 1e-9, f"{obj.Name}: sewn into the 8x6x4 box")
         (sewn_axis,) = cadmedial.add_to_document(doc, obj)
         check(healthy(sewn_axis) and sewn_axis.Polygons > 0, f"{obj.Name}: MedialAxis from the sewn solid")
+        sewing = [w for w in sewn_axis.Warnings if "sewn" in w]
+        check(len(sewing) == 1 and "1 solid" in sewing[0], f"{obj.Name}: the sewing is in Warnings: {sewing}")
+    # The same shape is sewn once: the commands, the task panel and every
+    # recompute ask for a source's solids again.
+    sewing_calls = []
+    native_sew = cadmedial.api.solids_brep
+    cadmedial.api.solids_brep = lambda shape: sewing_calls.append(1) or native_sew(shape)
+    try:
+        sewn_axis.Spacing = sewn_axis.SpacingUsed * 1.5
+        doc.recompute()
+        document.source_solids(loose)
+        check(healthy(sewn_axis) and not sewing_calls, f"recomputed without sewing again ({len(sewing_calls)} calls)")
+        loose.Shape = Part.makeCompound([f.copy() for f in Part.makeBox(8, 6, 5).Faces])
+        doc.recompute()
+        check(healthy(sewn_axis) and len(sewing_calls) == 1, f"a changed shape is sewn anew ({len(sewing_calls)})")
+    finally:
+        cadmedial.api.solids_brep = native_sew
     expect_error(lambda: cadmedial.compute(face.Shape), cadmedial.InputError, "no closed solid", "compute(face)")
     expect_error(lambda: cadmedial.compute("/no/such/file.step"), cadmedial.InputError, "no such file", "missing file")
     expect_error(lambda: cadmedial.compute(os.path.join(source_dir, "README.md")), ValueError, "unknown extension",
