@@ -1,6 +1,7 @@
 #include "cadmedial/exact_oracle.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -206,6 +207,12 @@ struct ExactOracle::Shared {
   TriangleTree tree;
   double deflection = 0;  // largest mesh deflection (requested or reported by BRepMesh)
   double margin = 0;      // assumed bound on |exact − mesh| distance to one face
+  bool allFacesMeshed = false;
+  // Per face, its mesh's area, and whether meshSide may trust the mesh
+  // there: -1 not yet known, 0 no, 1 yes (faceMeshMatches; set once, by
+  // whichever thread asks first: every thread computes the same answer).
+  std::vector<double> faceMeshArea;
+  std::unique_ptr<std::atomic<signed char>[]> faceMeshTrusted;
   double diagonal = 0;
   gp_Pnt boxMin, boxMax;
   bool inwardFaces = false;  // faces oriented inside-out (negative volume)
@@ -418,6 +425,9 @@ ExactOracle::ExactOracle(const TopoDS_Shape& solid, const ExactOracleParams& par
   s.deflection = deflection;
   s.faceMeshed.assign(nf, false);
   s.faceHasUV.assign(nf, false);
+  s.faceMeshArea.assign(nf, 0.0);
+  s.faceMeshTrusted = std::make_unique<std::atomic<signed char>[]>(nf);
+  for (int f = 0; f < nf; ++f) s.faceMeshTrusted[f] = -1;
   double area = 0;
   for (int f = 0; f < nf; ++f) {
     TopLoc_Location loc;
@@ -443,10 +453,12 @@ ExactOracle::ExactOracle(const TopoDS_Shape& solid, const ExactOracleParams& par
       s.triangleUV.push_back(uv);
       area += a;
       s.cumulativeArea.push_back(area);
+      s.faceMeshArea[f] += a;
     }
   }
   s.tree.build(s.triangles);
   s.margin = params.candidateDeflections / 2.0 * s.deflection;
+  s.allFacesMeshed = std::all_of(s.faceMeshed.begin(), s.faceMeshed.end(), [](bool m) { return m; });
 
   shared_ = shared;
   work_ = std::make_unique<Workspace>();
@@ -523,6 +535,106 @@ bool ExactOracle::inside(const gp_Pnt& p, double onTolerance, double* distance) 
   work_->classifier->Perform(p, onTolerance);
   const TopAbs_State state = work_->classifier->State();
   return state == TopAbs_IN || state == TopAbs_ON;
+}
+
+namespace {
+
+// A face's mesh covers the face and nothing else when its area is the
+// face's to 5 %: BRepMesh on a face whose wires it misreads (a sewn IGES
+// gear) meshed more of the untrimmed surface, triangles where the solid has
+// no boundary, and a side read from those would be wrong. (Chords of a
+// face curved on the scale of the deflection miss a few per cent.)
+bool faceMeshMatches(const TopoDS_Face& face, double meshArea) {
+  GProp_GProps props;
+  BRepGProp::SurfaceProperties(face, props);
+  const double exact = props.Mass();
+  return exact > 0 && std::abs(meshArea / exact - 1) <= 0.05;
+}
+
+}  // namespace
+
+int ExactOracle::meshSide(const gp_Pnt& p, double margins) {
+  const Shared& s = *shared_;
+  Workspace& w = *work_;
+  // Every face meshed, or the mesh has holes and sides mean nothing.
+  if (s.triangles.empty() || !s.allFacesMeshed) return 0;
+  if (w.faces.size() != static_cast<std::size_t>(s.topo.faceCount())) w.faces.resize(s.topo.faceCount());
+  const gp_XYZ px = p.XYZ();
+  // The nearest triangles: all within rounding of the nearest distance, so
+  // that a foot on a mesh edge or vertex comes with every triangle at it.
+  const double rounding = 1e-9 * s.diagonal;
+  double best = std::numeric_limits<double>::infinity();
+  w.band.clear();
+  s.tree.query(px, rounding, w.stack, [&](std::uint32_t t) {
+    const Triangle& tri = s.triangles[t];
+    const std::array<double, 3> b = closestBarycentric(px, tri[0], tri[1], tri[2]);
+    const double d = (px - (b[0] * tri[0] + b[1] * tri[1] + b[2] * tri[2])).Modulus();
+    best = std::min(best, d);
+    if (d <= best + rounding) w.band.emplace_back(d, t);
+    return d;
+  });
+  if (!(best > margins * s.margin)) return 0;
+  // The side of the closed mesh at its nearest point q: the sign of
+  // (p − q) · N with N the angle-weighted pseudo-normal at q (Bærentzen &
+  // Aanæs 2005): the sum over the triangles at q of their outward normals,
+  // each weighted by its angle at q (π when q is inside an edge, the
+  // triangle alone when q is inside it). Triangles equally near with
+  // another foot (p equidistant from two places) must give the same side.
+  struct Foot {
+    gp_XYZ point;
+    gp_Vec normal;  // the weighted sum
+  };
+  std::vector<Foot> feet;
+  for (const auto& [d, t] : w.band) {
+    if (d > best + rounding) continue;
+    const Triangle& tri = s.triangles[t];
+    gp_Vec normal = gp_Vec(tri[1] - tri[0]).Crossed(gp_Vec(tri[2] - tri[0]));
+    if (normal.Magnitude() <= 1e-300) return 0;
+    normal.Normalize();
+    // Outward: as the exact surface's outward normal at the triangle's UV
+    // centre (BRepMesh's winding follows the face's parameters).
+    const int f = s.triangleFace[t];
+    if (!s.faceHasUV[f]) return 0;
+    if (s.faceMeshTrusted[f] < 0) s.faceMeshTrusted[f] = faceMeshMatches(s.topo.face(f), s.faceMeshArea[f]) ? 1 : 0;
+    if (s.faceMeshTrusted[f] == 0) return 0;
+    if (!w.faces[f]) w.faces[f] = std::make_unique<FaceSolver>(s.topo.face(f));
+    const auto& uv = s.triangleUV[t];
+    gp_Pnt q;
+    gp_Vec su, sv;
+    w.faces[f]->surface.D1((uv[0].X() + uv[1].X() + uv[2].X()) / 3, (uv[0].Y() + uv[1].Y() + uv[2].Y()) / 3, q, su,
+                           sv);
+    gp_Vec outward = su.Crossed(sv);
+    if (outward.Magnitude() <= 1e-300) return 0;
+    outward.Normalize();
+    if ((s.topo.face(f).Orientation() == TopAbs_REVERSED) != s.inwardFaces) outward.Reverse();
+    const double agreement = normal.Dot(outward);
+    if (std::abs(agreement) < 0.5) return 0;  // the triangle stands across the surface: no verdict
+    if (agreement < 0) normal.Reverse();
+    const std::array<double, 3> b = closestBarycentric(px, tri[0], tri[1], tri[2]);
+    const gp_XYZ foot = b[0] * tri[0] + b[1] * tri[1] + b[2] * tri[2];
+    double weight = 2 * M_PI;  // inside the triangle
+    for (int k = 0; k < 3; ++k) {
+      if (b[k] >= 1.0) {  // at corner k: the triangle's angle there
+        weight = gp_Vec(tri[(k + 1) % 3] - tri[k]).Angle(gp_Vec(tri[(k + 2) % 3] - tri[k]));
+        break;
+      }
+      if (b[k] <= 0.0) weight = M_PI;  // on the edge opposite corner k
+    }
+    auto same = std::find_if(feet.begin(), feet.end(),
+                             [&](const Foot& x) { return (x.point - foot).Modulus() <= rounding; });
+    if (same == feet.end()) feet.push_back({foot, weight * normal});
+    else same->normal += weight * normal;
+  }
+  int side = 0;
+  for (const Foot& foot : feet) {
+    const gp_Vec along(foot.point, px);
+    const double cosine = along.Dot(foot.normal) / (along.Magnitude() * foot.normal.Magnitude());
+    if (!(std::abs(cosine) > 1e-6)) return 0;  // p (nearly) in the tangent plane: no verdict
+    const int here = cosine > 0 ? 1 : -1;
+    if (side != 0 && here != side) return 0;
+    side = here;
+  }
+  return side;
 }
 
 std::size_t ExactOracle::classifierQueries() const { return work_->classifierQueries; }

@@ -69,6 +69,38 @@ std::vector<gp_Pnt> randomPoints(const ExactOracle& oracle, int count, unsigned 
   return points;
 }
 
+// ExactOracle::meshSide, where it decides, says what the classifier says:
+// on the random points of the grown box and on points 0.2 % to 2 % of the
+// diagonal off the boundary in random directions, where the mesh and the
+// exact surface are closest to disagreeing. It decides for most points
+// farther than 2 % of the diagonal (the run's walk check counts on that).
+void expectMeshSideAgreesWithOcct(ExactOracle& oracle, BRepClass3d_SolidClassifier& classifier,
+                                  const std::string& label, int count) {
+  std::vector<gp_Pnt> points = randomPoints(oracle, count, 11);
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> offset(0.002, 0.02), coordinate(-1.0, 1.0);
+  for (const gp_Pnt& q : oracle.sampleBoundary(count, 17)) {
+    gp_Vec dir(coordinate(rng), coordinate(rng), coordinate(rng));
+    if (dir.Magnitude() < 1e-3) continue;
+    points.push_back(q.Translated(dir.Normalized() * offset(rng) * oracle.diagonal()));
+  }
+  int decided = 0, far = 0, farDecided = 0;
+  for (const gp_Pnt& p : points) {
+    const int side = oracle.meshSide(p, 2.0);
+    const bool isFar = oracle.distance(p) > 0.02 * oracle.diagonal();
+    far += isFar;
+    if (side == 0) continue;
+    ++decided;
+    farDecided += isFar;
+    classifier.Perform(p, 1e-9 * oracle.diagonal());
+    EXPECT_EQ(side < 0, classifier.State() == TopAbs_IN)
+        << label << ": meshSide " << side << " at " << p.X() << " " << p.Y() << " " << p.Z();
+  }
+  EXPECT_GE(farDecided, 0.9 * far) << label;
+  std::printf("%s: meshSide decided %d of %zu points, %d of %d far ones\n", label.c_str(), decided, points.size(),
+              farDecided, far);
+}
+
 // Distance to 1e-7 x diagonal, and the inside test equal to
 // BRepClass3d_SolidClassifier's (away from the boundary, where both may differ
 // by their tolerances).
@@ -92,6 +124,7 @@ void expectAgreesWithOcct(const TopoDS_Shape& solid, const std::string& label, i
   }
   std::printf("%s: %d points, max |oracle - DistShapeShape| = %.3g (%.3g x diagonal)\n", label.c_str(), count, worst,
               worst / oracle.diagonal());
+  expectMeshSideAgreesWithOcct(oracle, classifier, label, count);
 }
 
 void expectAgreesWithDistShapeShape(const std::string& path, int count) {
