@@ -80,12 +80,16 @@ SolidResult attempt(const TopoDS_Shape& solid, const SamplingParams& sampling, c
         const TopAbs_State state = stateOf(p, 1e-9);
         return state == TopAbs_IN || state == TopAbs_UNKNOWN;
       }
+      ExactOracle& local = exactPerThread->local();
+      const gp_Pnt point(p[0], p[1], p[2]);
+      // Most centroids are far from the surface: there the oracle's
+      // closed mesh tells the side (ExactOracle::meshSide), in
+      // microseconds; the exact test where it cannot or fails.
       try {
-        ExactOracle& local = exactPerThread->local();
-        const gp_Pnt point(p[0], p[1], p[2]);
-        // Most centroids are far from the surface: there the oracle's mesh
-        // decides for certain (ExactOracle::meshSide), in microseconds.
         if (const int side = local.meshSide(point, 2.0)) return side < 0;
+      } catch (...) {
+      }
+      try {
         return local.inside(point, 1e-9);
       } catch (...) {
         return true;  // as a point the classifier fails on

@@ -37,6 +37,7 @@ python3 after plugin/install.sh).
 import collections
 import hashlib
 import os
+import re
 import tempfile
 
 import FreeCAD as App
@@ -193,15 +194,26 @@ _SEWN = collections.OrderedDict()
 _SEWN_KEEP = 8
 
 
+# A TShape's flags line in BREP text (free, modified, checked, ...): the
+# view's meshing of a shape clears one, and the shape is the same.
+_BREP_FLAGS = re.compile(rb"^[01]{7}$", re.MULTILINE)
+
+
 def _sew(shape):
-    key = hashlib.sha1(shape.exportBrepToString().encode()).hexdigest()
-    if key in _SEWN:
-        _SEWN.move_to_end(key)
-        return _SEWN[key]
-    made = api.solids_brep(shape)
-    _SEWN[key] = (list(made["solids"]), [str(w) for w in made["warnings"]])
-    while len(_SEWN) > _SEWN_KEEP:
-        _SEWN.popitem(last=False)
+    """(BREP texts, warnings) of the solids a shape's faces sew into, or
+    api.InputError saying what stayed open; each shape sewn once."""
+    key = hashlib.sha1(_BREP_FLAGS.sub(b"", shape.exportBrepToString().encode())).hexdigest()
+    if key not in _SEWN:
+        try:
+            made = api.solids_brep(shape)
+            _SEWN[key] = (list(made["solids"]), [str(w) for w in made["warnings"]])
+        except api.InputError as e:
+            _SEWN[key] = e
+        while len(_SEWN) > _SEWN_KEEP:
+            _SEWN.popitem(last=False)
+    _SEWN.move_to_end(key)
+    if isinstance(_SEWN[key], Exception):
+        raise _SEWN[key]
     return _SEWN[key]
 
 

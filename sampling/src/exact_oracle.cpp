@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <mutex>
+#include <unordered_map>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -213,6 +215,12 @@ struct ExactOracle::Shared {
   // whichever thread asks first: every thread computes the same answer).
   std::vector<double> faceMeshArea;
   std::unique_ptr<std::atomic<signed char>[]> faceMeshTrusted;
+  // meshSide's preconditions on the whole mesh, found on its first call
+  // (eval never asks): closed and consistently oriented outward, and the
+  // largest B-rep tolerance (edge samples of the mesh lie on 3D curves).
+  mutable std::once_flag meshCheckedOnce;
+  mutable bool meshClosedOutward = false;
+  double largestTolerance = 0;
   double diagonal = 0;
   gp_Pnt boxMin, boxMax;
   bool inwardFaces = false;  // faces oriented inside-out (negative volume)
@@ -459,6 +467,12 @@ ExactOracle::ExactOracle(const TopoDS_Shape& solid, const ExactOracleParams& par
   s.tree.build(s.triangles);
   s.margin = params.candidateDeflections / 2.0 * s.deflection;
   s.allFacesMeshed = std::all_of(s.faceMeshed.begin(), s.faceMeshed.end(), [](bool m) { return m; });
+  for (TopExp_Explorer x(s.solid, TopAbs_FACE); x.More(); x.Next())
+    s.largestTolerance = std::max(s.largestTolerance, BRep_Tool::Tolerance(TopoDS::Face(x.Current())));
+  for (TopExp_Explorer x(s.solid, TopAbs_EDGE); x.More(); x.Next())
+    s.largestTolerance = std::max(s.largestTolerance, BRep_Tool::Tolerance(TopoDS::Edge(x.Current())));
+  for (TopExp_Explorer x(s.solid, TopAbs_VERTEX); x.More(); x.Next())
+    s.largestTolerance = std::max(s.largestTolerance, BRep_Tool::Tolerance(TopoDS::Vertex(x.Current())));
 
   shared_ = shared;
   work_ = std::make_unique<Workspace>();
@@ -539,11 +553,57 @@ bool ExactOracle::inside(const gp_Pnt& p, double onTolerance, double* distance) 
 
 namespace {
 
+// The mesh's triangles wound outward (BRepMesh winds them along the face's
+// parameters: reversed on a REVERSED face, and all of them on a solid whose
+// faces point inward).
+bool faceWoundInward(const TopoDS_Face& face, bool inwardFaces) {
+  return (face.Orientation() == TopAbs_REVERSED) != inwardFaces;
+}
+
+// Closed and consistently oriented: with corners identified by their exact
+// coordinates (BRepMesh puts the nodes of an edge shared by two faces at the
+// same points), every directed edge of an outward-wound triangle appears
+// once and its reverse once. A face mesh that ignores a hole of its face,
+// or leaves one, fails this. (Triangles without area were left out of the
+// mesh: those with two corners at one point, at poles, leave no edge
+// unmatched; a sliver with three distinct collinear corners does, and
+// then meshSide never decides.)
+bool closedAndOutward(const std::vector<Triangle>& triangles, const std::vector<int>& triangleFace,
+                      const SolidTopology& topo, bool inwardFaces) {
+  struct Hash {
+    std::size_t operator()(const std::array<double, 3>& v) const {
+      std::size_t h = 0;
+      for (double x : v) h = h * 1000003u ^ std::hash<double>()(x);
+      return h;
+    }
+  };
+  std::unordered_map<std::array<double, 3>, std::uint32_t, Hash> ids;
+  ids.reserve(triangles.size());
+  auto id = [&](const gp_XYZ& p) {
+    return ids.emplace(std::array<double, 3>{p.X(), p.Y(), p.Z()}, static_cast<std::uint32_t>(ids.size()))
+        .first->second;
+  };
+  std::unordered_map<std::uint64_t, int> directed;  // (from, to) -> uses
+  directed.reserve(3 * triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    std::array<std::uint32_t, 3> v{id(triangles[t][0]), id(triangles[t][1]), id(triangles[t][2])};
+    if (faceWoundInward(topo.face(triangleFace[t]), inwardFaces)) std::swap(v[1], v[2]);
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = v[k], b = v[(k + 1) % 3];
+      if (a == b) return false;
+      if (++directed[std::uint64_t(a) << 32 | b] > 1) return false;
+    }
+  }
+  for (const auto& [key, uses] : directed)
+    if (directed.find(key << 32 | key >> 32) == directed.end()) return false;
+  return true;
+}
+
 // A face's mesh covers the face and nothing else when its area is the
-// face's to 5 %: BRepMesh on a face whose wires it misreads (a sewn IGES
-// gear) meshed more of the untrimmed surface, triangles where the solid has
-// no boundary, and a side read from those would be wrong. (Chords of a
-// face curved on the scale of the deflection miss a few per cent.)
+// face's to 5 %: one that misread a wire (covering a hole, or leaving
+// part of the face out) would put triangles where the solid has no
+// boundary, and a side read from them would be wrong. (Chords of a face
+// curved on the scale of the deflection miss a few per cent.)
 bool faceMeshMatches(const TopoDS_Face& face, double meshArea) {
   GProp_GProps props;
   BRepGProp::SurfaceProperties(face, props);
@@ -556,12 +616,18 @@ bool faceMeshMatches(const TopoDS_Face& face, double meshArea) {
 int ExactOracle::meshSide(const gp_Pnt& p, double margins) {
   const Shared& s = *shared_;
   Workspace& w = *work_;
-  // Every face meshed, or the mesh has holes and sides mean nothing.
+  // Every face meshed, the mesh closed and wound outward, or sides read
+  // from it mean nothing.
   if (s.triangles.empty() || !s.allFacesMeshed) return 0;
+  std::call_once(s.meshCheckedOnce, [&s] {
+    s.meshClosedOutward = closedAndOutward(s.triangles, s.triangleFace, s.topo, s.inwardFaces);
+  });
+  if (!s.meshClosedOutward) return 0;
   if (w.faces.size() != static_cast<std::size_t>(s.topo.faceCount())) w.faces.resize(s.topo.faceCount());
   const gp_XYZ px = p.XYZ();
   // The nearest triangles: all within rounding of the nearest distance, so
-  // that a foot on a mesh edge or vertex comes with every triangle at it.
+  // that a foot on a mesh edge or vertex comes with every triangle at it
+  // (a box is skipped only when farther than the running best + rounding).
   const double rounding = 1e-9 * s.diagonal;
   double best = std::numeric_limits<double>::infinity();
   w.band.clear();
@@ -573,7 +639,10 @@ int ExactOracle::meshSide(const gp_Pnt& p, double margins) {
     if (d <= best + rounding) w.band.emplace_back(d, t);
     return d;
   });
-  if (!(best > margins * s.margin)) return 0;
+  // Farther from the mesh than the mesh can be from the exact surface: its
+  // deflection, and the tolerance by which its edge nodes (on the 3D
+  // curves) may miss the faces.
+  if (!(best > std::max(margins * s.margin, 4 * s.largestTolerance))) return 0;
   // The side of the closed mesh at its nearest point q: the sign of
   // (p − q) · N with N the angle-weighted pseudo-normal at q (Bærentzen &
   // Aanæs 2005): the sum over the triangles at q of their outward normals,
@@ -588,13 +657,13 @@ int ExactOracle::meshSide(const gp_Pnt& p, double margins) {
   for (const auto& [d, t] : w.band) {
     if (d > best + rounding) continue;
     const Triangle& tri = s.triangles[t];
-    gp_Vec normal = gp_Vec(tri[1] - tri[0]).Crossed(gp_Vec(tri[2] - tri[0]));
-    if (normal.Magnitude() <= 1e-300) return 0;
-    normal.Normalize();
-    // Outward: as the exact surface's outward normal at the triangle's UV
-    // centre (BRepMesh's winding follows the face's parameters).
     const int f = s.triangleFace[t];
-    if (!s.faceHasUV[f]) return 0;
+    gp_Vec normal = gp_Vec(tri[1] - tri[0]).Crossed(gp_Vec(tri[2] - tri[0]));
+    if (normal.Magnitude() <= 1e-300 || !s.faceHasUV[f]) return 0;
+    normal.Normalize();
+    if (faceWoundInward(s.topo.face(f), s.inwardFaces)) normal.Reverse();
+    // The face's mesh covers it (area), and this triangle lies along the
+    // exact surface the way it faces (a fold in UV would not).
     if (s.faceMeshTrusted[f] < 0) s.faceMeshTrusted[f] = faceMeshMatches(s.topo.face(f), s.faceMeshArea[f]) ? 1 : 0;
     if (s.faceMeshTrusted[f] == 0) return 0;
     if (!w.faces[f]) w.faces[f] = std::make_unique<FaceSolver>(s.topo.face(f));
@@ -606,28 +675,33 @@ int ExactOracle::meshSide(const gp_Pnt& p, double margins) {
     gp_Vec outward = su.Crossed(sv);
     if (outward.Magnitude() <= 1e-300) return 0;
     outward.Normalize();
-    if ((s.topo.face(f).Orientation() == TopAbs_REVERSED) != s.inwardFaces) outward.Reverse();
-    const double agreement = normal.Dot(outward);
-    if (std::abs(agreement) < 0.5) return 0;  // the triangle stands across the surface: no verdict
-    if (agreement < 0) normal.Reverse();
+    if (faceWoundInward(s.topo.face(f), s.inwardFaces)) outward.Reverse();
+    if (normal.Dot(outward) < 0.5) return 0;
     const std::array<double, 3> b = closestBarycentric(px, tri[0], tri[1], tri[2]);
     const gp_XYZ foot = b[0] * tri[0] + b[1] * tri[1] + b[2] * tri[2];
-    double weight = 2 * M_PI;  // inside the triangle
-    for (int k = 0; k < 3; ++k) {
-      if (b[k] >= 1.0) {  // at corner k: the triangle's angle there
-        weight = gp_Vec(tri[(k + 1) % 3] - tri[k]).Angle(gp_Vec(tri[(k + 2) % 3] - tri[k]));
-        break;
-      }
-      if (b[k] <= 0.0) weight = M_PI;  // on the edge opposite corner k
-    }
     auto same = std::find_if(feet.begin(), feet.end(),
                              [&](const Foot& x) { return (x.point - foot).Modulus() <= rounding; });
-    if (same == feet.end()) feet.push_back({foot, weight * normal});
-    else same->normal += weight * normal;
+    if (same == feet.end()) same = feet.insert(feet.end(), {foot, gp_Vec(0, 0, 0)});
+    // The weight from where the (merged) foot is on this triangle: at a
+    // corner its angle there, on an edge π, inside 2π.
+    double weight = 2 * M_PI;
+    for (int k = 0; k < 3; ++k) {
+      const gp_XYZ& a = tri[k];
+      const gp_XYZ& c = tri[(k + 1) % 3];
+      if ((same->point - a).Modulus() <= rounding) {
+        weight = gp_Vec(c - a).Angle(gp_Vec(tri[(k + 2) % 3] - a));
+        break;
+      }
+      const gp_XYZ edge = c - a;
+      const double t = std::clamp((same->point - a).Dot(edge) / edge.SquareModulus(), 0.0, 1.0);
+      if ((same->point - (a + t * edge)).Modulus() <= rounding) weight = M_PI;
+    }
+    same->normal += weight * normal;
   }
   int side = 0;
   for (const Foot& foot : feet) {
     const gp_Vec along(foot.point, px);
+    if (foot.normal.Magnitude() <= 1e-300) return 0;
     const double cosine = along.Dot(foot.normal) / (along.Magnitude() * foot.normal.Magnitude());
     if (!(std::abs(cosine) > 1e-6)) return 0;  // p (nearly) in the tangent plane: no verdict
     const int here = cosine > 0 ? 1 : -1;

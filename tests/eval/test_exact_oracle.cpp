@@ -72,7 +72,8 @@ std::vector<gp_Pnt> randomPoints(const ExactOracle& oracle, int count, unsigned 
 // ExactOracle::meshSide, where it decides, says what the classifier says:
 // on the random points of the grown box and on points 0.2 % to 2 % of the
 // diagonal off the boundary in random directions, where the mesh and the
-// exact surface are closest to disagreeing. It decides for most points
+// exact surface are closest to disagreeing, and 0.5 % to 5 % off every
+// vertex of the solid. It decides for most points
 // farther than 2 % of the diagonal (the run's walk check counts on that).
 void expectMeshSideAgreesWithOcct(ExactOracle& oracle, BRepClass3d_SolidClassifier& classifier,
                                   const std::string& label, int count) {
@@ -84,6 +85,20 @@ void expectMeshSideAgreesWithOcct(ExactOracle& oracle, BRepClass3d_SolidClassifi
     if (dir.Magnitude() < 1e-3) continue;
     points.push_back(q.Translated(dir.Normalized() * offset(rng) * oracle.diagonal()));
   }
+  // Around every vertex of the solid, where the nearest mesh point is a
+  // mesh vertex or edge and the pseudo-normal's weights matter (sharp
+  // corners, saddles where convex and concave edges meet).
+  TopTools_IndexedMapOfShape vertices;
+  TopExp::MapShapes(oracle.solid(), TopAbs_VERTEX, vertices);
+  std::uniform_real_distribution<double> cornerOffset(0.005, 0.05);
+  const int stride = std::max(1, vertices.Extent() / 100);  // at most ~100 vertices a part
+  for (int v = 1; v <= vertices.Extent(); v += stride)
+    for (int k = 0; k < 6; ++k) {
+      gp_Vec dir(coordinate(rng), coordinate(rng), coordinate(rng));
+      if (dir.Magnitude() < 1e-3) continue;
+      points.push_back(BRep_Tool::Pnt(TopoDS::Vertex(vertices(v)))
+                           .Translated(dir.Normalized() * cornerOffset(rng) * oracle.diagonal()));
+    }
   int decided = 0, far = 0, farDecided = 0;
   for (const gp_Pnt& p : points) {
     const int side = oracle.meshSide(p, 2.0);

@@ -292,7 +292,14 @@ def main():
         sewn_axis.Spacing = sewn_axis.SpacingUsed * 1.5
         doc.recompute()
         document.source_solids(loose)
+        import MeshPart  # as the 3D view does: meshing flags the shape, which stays the same shape
+
+        MeshPart.meshFromShape(Shape=loose.Shape, LinearDeflection=0.1)
+        document.source_solids(loose)
         check(healthy(sewn_axis) and not sewing_calls, f"recomputed without sewing again ({len(sewing_calls)} calls)")
+        for _ in range(2):
+            expect_error(lambda: document.source_solids(shell), ValueError, "left open", "an open shell, asked again")
+        check(len(sewing_calls) == 0, f"an open shell's failed sewing is remembered too ({len(sewing_calls)} calls)")
         loose.Shape = Part.makeCompound([f.copy() for f in Part.makeBox(8, 6, 5).Faces])
         doc.recompute()
         check(healthy(sewn_axis) and len(sewing_calls) == 1, f"a changed shape is sewn anew ({len(sewing_calls)})")

@@ -58,13 +58,15 @@ class ExactOracle {
   // the way) is stored there.
   bool inside(const gp_Pnt& p, double onTolerance = 0, double* distance = nullptr);
   // The side of p known from the oracle's mesh alone: -1 inside, +1
-  // outside, 0 when the mesh cannot tell for certain. It tells when p is
-  // more than `margins` × (2 mesh deflections) from the mesh, so the exact
-  // surface cannot lie between p and the mesh (the same bound the distance
-  // queries trust to pick candidate faces), and p's nearest mesh point is
-  // inside one triangle (away from its edges), whose outward normal then
-  // gives the side, as the mesh is closed. Microseconds against the tens to
-  // hundreds of inside(): the run's check of the walk asks it first.
+  // outside, 0 when the mesh cannot tell. It tells when every face is meshed
+  // and the mesh is closed and wound outward (checked once), p is more than
+  // `margins` × (2 mesh deflections) and 4 B-rep tolerances from the mesh,
+  // so the exact surface cannot pass between p and the mesh (the bound the
+  // distance queries already trust to pick candidate faces), and the
+  // triangles at p's nearest mesh point lie along the exact surface, on
+  // faces meshed to their exact area: then the angle-weighted pseudo-normal
+  // there gives the side. Microseconds against the tens to hundreds of
+  // inside(): the run's check of the walk asks it first.
   int meshSide(const gp_Pnt& p, double margins = 4.0);
   // How many inside() calls of this copy went to the classifier.
   std::size_t classifierQueries() const;
