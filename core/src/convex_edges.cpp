@@ -118,8 +118,22 @@ void procConvexEdges(const DelaunayVoronoi& dv, const SampleSet& samples, const 
   }
 
   // 3. Fills between consecutive feature samples, each gap once.
+  // A vertex where one convex edge meets only concave or smooth ones (the
+  // foot of a boss's vertical edge on its plate) has no fan of its own, but
+  // the edge's sheet reaches it: the gap to the edge's first sample is
+  // filled from that sample's fan alone (`oneSided`). A new vertex coned
+  // over edges of one fan adds no loop; with two or more convex edges at
+  // the vertex (a pocket's rim corner) it would join their sheets a second
+  // time, so those stay open.
+  std::vector<int> convexEdgesAt(n, 0);
+  for (const EdgeInfo& e : samples.edges) {
+    if (e.kind != EdgeKind::Convex || e.samples.size() < 2) continue;
+    ++convexEdgesAt[dv.canonicalSample(e.samples.front())];
+    ++convexEdgesAt[dv.canonicalSample(e.samples.back())];
+  }
   struct Gap {
     Index a, b, triplet;
+    bool oneSided = false;  // only b (the triplet sample) has a fan; a is the vertex
   };
   std::vector<Gap> gaps;
   for (std::size_t k = 0; k < samples.triplets.size(); ++k) {
@@ -131,8 +145,11 @@ void procConvexEdges(const DelaunayVoronoi& dv, const SampleSet& samples, const 
       const Index sn = dv.canonicalSample(nb);
       if (sn == s) continue;
       const bool hasFan = (tripletOf[sn] != kNoIndex) || fanAtCorner[sn];
-      if (!hasFan) continue;
-      gaps.push_back({std::min(s, sn), std::max(s, sn), static_cast<Index>(k)});
+      if (hasFan) {
+        gaps.push_back({std::min(s, sn), std::max(s, sn), static_cast<Index>(k)});
+      } else if (samples.kind[sn] == SampleKind::Corner && convexEdgesAt[sn] == 1) {
+        gaps.push_back({sn, s, static_cast<Index>(k), true});
+      }
     }
   }
   std::sort(gaps.begin(), gaps.end(), [](const Gap& x, const Gap& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
@@ -154,7 +171,7 @@ void procConvexEdges(const DelaunayVoronoi& dv, const SampleSet& samples, const 
     const auto start = circ;
     do {
       const Index v = DelaunayVoronoi::cellId(circ);
-      if (!dv.isInfinite(v) && fan.inFan(v, a) && fan.inFan(v, b)) {
+      if (!dv.isInfinite(v) && (gaps[g].oneSided || fan.inFan(v, a)) && fan.inFan(v, b)) {
         ForcedTriangle fill;
         fill.kind = PolygonProvenance::ConvexEdgeFillTriangle;
         fill.samples = {a, b};
