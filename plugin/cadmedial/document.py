@@ -166,10 +166,11 @@ def point_signature(points, triangles, theta, rho):
     return f"points:{digest.hexdigest()}|theta={float(theta)!r}|rho={float(rho)!r}"
 
 
-def source_solids(source):
+def source_solids(source, warnings=None):
     """The solids of a document object, or ValueError saying what it holds.
     A Points or Mesh object counts as one source (its points), returned as
-    [source]."""
+    [source]. `warnings`, a list, gets what reading the shape had to say:
+    the sewing of a shape without a solid, as `cadmedial run` warns."""
     if source is None:
         raise ValueError("no source object")
     if not hasattr(source, "TypeId") or not hasattr(source, "Document"):
@@ -183,7 +184,7 @@ def source_solids(source):
         raise ValueError(describe_non_solid(source, shape))
     if shape.Solids:
         return shape.Solids
-    return sewn_solids(source, shape)
+    return sewn_solids(source, shape, warnings)
 
 
 # Sewn solids by the BREP digest of the shape sewn: (BREP texts, warnings).
@@ -217,19 +218,22 @@ def _sew(shape):
     return _SEWN[key]
 
 
-def sewn_solids(source, shape):
+def sewn_solids(source, shape, warnings=None):
     """The solids the faces of a shape without one sew into (a closed shell,
     an imported IGES file's trimmed surfaces), made by the native module as
     `cadmedial run` makes them; ValueError saying what is left open when
-    none closes. The same shape is sewn once (its solids are remembered)."""
+    none closes. The same shape is sewn once (its solids are remembered).
+    `warnings`, a list, gets the sewing's."""
     import Part
 
     try:
-        texts, _ = _sew(shape)
+        texts, said = _sew(shape)
     except api.InputError as e:
         sewing = str(e).rsplit("; ", 1)[-1]  # the native message ends with what the sewing did
         detail = f" (its faces, {sewing})" if sewing.startswith("sewn at") else ""
         raise ValueError(describe_non_solid(source, shape) + detail) from None
+    if warnings is not None:
+        warnings.extend(said)
     solids = []
     for text in texts:
         solid = Part.Shape()
@@ -238,23 +242,8 @@ def sewn_solids(source, shape):
     return solids
 
 
-def source_warnings(source):
-    """What reading a source's shape had to say: the sewing of a shape
-    without a solid (what was sewn, at which tolerance), as `cadmedial run`
-    warns; [] for a shape with solids, points or a mesh."""
-    if is_point_object(source) or "Shape" not in getattr(source, "PropertiesList", []):
-        return []
-    shape = source_shape(source)
-    if shape is None or shape.isNull() or not shape.Faces or shape.Solids:
-        return []
-    try:
-        return list(_sew(shape)[1])
-    except api.InputError:
-        return []
-
-
-def source_solid(source, index):
-    solids = source_solids(source)
+def source_solid(source, index, warnings=None):
+    solids = source_solids(source, warnings)
     if not 0 <= index < len(solids):
         raise ValueError(f"'{source.Label}' has {len(solids)} solid(s); SolidIndex {index} does not exist")
     return solids[index]
@@ -428,8 +417,8 @@ class MedialAxisFeature(FeatureProxy):
 
         if is_point_object(obj.Source):
             return self.execute_points(obj)
-        solid = source_solid(obj.Source, obj.SolidIndex)
-        reading = source_warnings(obj.Source)
+        reading = []  # the source's own warnings (its sewing)
+        solid = source_solid(obj.Source, obj.SolidIndex, reading)
         spacing, theta, rho = float(obj.Spacing.Value), float(obj.Theta.Value), float(obj.Rho)
         brep = solid.exportBrepToString()
         graded = bool(obj.GradedSpacing)

@@ -204,6 +204,19 @@ void computeSpacings(SamplingContext& ctx) {
   for (int f = 0; f < topo.faceCount(); ++f)
     ctx.faceSpacing.emplace_back(topo.face(f), rays, ctx.minSpacing, ctx.spacing, ctx.gradedSpacing, ctx.boundsScale);
 
+  // Each edge's curvature, once for both passes below; the tightest for
+  // the warning (warnAboutUnresolvedCurves).
+  std::vector<double> radius(topo.edgeCount(), 1e300);
+  for (int e = 0; e < topo.edgeCount(); ++e) {
+    if (topo.edgeDegenerate[e]) continue;
+    gp_Pnt tightest;
+    radius[e] = edgeMinCurvatureRadius(topo.edge(e), &tightest);
+    if (radius[e] < ctx.tightestEdgeRadius) {
+      ctx.tightestEdgeRadius = radius[e];
+      ctx.tightestEdgeAt = tightest;
+    }
+  }
+
   // An edge is sampled at the spacing its own curvature and its faces'
   // fields ask for along it: evenly at the smallest of them on the first
   // pass (the faces' grading from convex edges reads it), then, once the
@@ -213,13 +226,7 @@ void computeSpacings(SamplingContext& ctx) {
     ctx.edgeSpacingAlong.assign(topo.edgeCount(), {});
     for (int e = 0; e < topo.edgeCount(); ++e) {
       if (topo.edgeDegenerate[e]) continue;
-      gp_Pnt tightest;
-      const double radius = edgeMinCurvatureRadius(topo.edge(e), &tightest);
-      if (radius < ctx.tightestEdgeRadius) {
-        ctx.tightestEdgeRadius = radius;
-        ctx.tightestEdgeAt = tightest;
-      }
-      const double curvature = kCurvatureFraction * ctx.boundsScale * radius;
+      const double curvature = kCurvatureFraction * ctx.boundsScale * radius[e];
       BRepAdaptor_Curve curve(topo.edge(e));
       const double length = ctx.edgeFeatures[e].length;
       // Points where the fields are read: 17 evenly in the parameter, or

@@ -1,15 +1,15 @@
 #include "cadmedial/exact_oracle.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <mutex>
-#include <unordered_map>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <mutex>
 #include <random>
 #include <stdexcept>
+#include <unordered_map>
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
@@ -209,18 +209,18 @@ struct ExactOracle::Shared {
   TriangleTree tree;
   double deflection = 0;  // largest mesh deflection (requested or reported by BRepMesh)
   double margin = 0;      // assumed bound on |exact − mesh| distance to one face
-  bool allFacesMeshed = false;
   // Per face, its mesh's area, and whether meshSide may trust the mesh
   // there: -1 not yet known, 0 no, 1 yes (faceMeshMatches; set once, by
   // whichever thread asks first: every thread computes the same answer).
   std::vector<double> faceMeshArea;
   std::unique_ptr<std::atomic<signed char>[]> faceMeshTrusted;
   // meshSide's preconditions on the whole mesh, found on its first call
-  // (eval never asks): closed and consistently oriented outward, and the
-  // largest B-rep tolerance (edge samples of the mesh lie on 3D curves).
+  // (eval never asks): closed and consistently oriented outward (so every
+  // face is meshed), and the largest B-rep tolerance (the mesh's edge nodes
+  // lie on 3D curves).
   mutable std::once_flag meshCheckedOnce;
   mutable bool meshClosedOutward = false;
-  double largestTolerance = 0;
+  mutable double largestTolerance = 0;
   double diagonal = 0;
   gp_Pnt boxMin, boxMax;
   bool inwardFaces = false;  // faces oriented inside-out (negative volume)
@@ -466,13 +466,6 @@ ExactOracle::ExactOracle(const TopoDS_Shape& solid, const ExactOracleParams& par
   }
   s.tree.build(s.triangles);
   s.margin = params.candidateDeflections / 2.0 * s.deflection;
-  s.allFacesMeshed = std::all_of(s.faceMeshed.begin(), s.faceMeshed.end(), [](bool m) { return m; });
-  for (TopExp_Explorer x(s.solid, TopAbs_FACE); x.More(); x.Next())
-    s.largestTolerance = std::max(s.largestTolerance, BRep_Tool::Tolerance(TopoDS::Face(x.Current())));
-  for (TopExp_Explorer x(s.solid, TopAbs_EDGE); x.More(); x.Next())
-    s.largestTolerance = std::max(s.largestTolerance, BRep_Tool::Tolerance(TopoDS::Edge(x.Current())));
-  for (TopExp_Explorer x(s.solid, TopAbs_VERTEX); x.More(); x.Next())
-    s.largestTolerance = std::max(s.largestTolerance, BRep_Tool::Tolerance(TopoDS::Vertex(x.Current())));
 
   shared_ = shared;
   work_ = std::make_unique<Workspace>();
@@ -599,6 +592,17 @@ bool closedAndOutward(const std::vector<Triangle>& triangles, const std::vector<
   return true;
 }
 
+double largestTolerance(const TopoDS_Shape& solid) {
+  double tolerance = 0;
+  for (TopExp_Explorer x(solid, TopAbs_FACE); x.More(); x.Next())
+    tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Face(x.Current())));
+  for (TopExp_Explorer x(solid, TopAbs_EDGE); x.More(); x.Next())
+    tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Edge(x.Current())));
+  for (TopExp_Explorer x(solid, TopAbs_VERTEX); x.More(); x.Next())
+    tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Vertex(x.Current())));
+  return tolerance;
+}
+
 // A face's mesh covers the face and nothing else when its area is the
 // face's to 5 %: one that misread a wire (covering a hole, or leaving
 // part of the face out) would put triangles where the solid has no
@@ -616,11 +620,12 @@ bool faceMeshMatches(const TopoDS_Face& face, double meshArea) {
 int ExactOracle::meshSide(const gp_Pnt& p, double margins) {
   const Shared& s = *shared_;
   Workspace& w = *work_;
-  // Every face meshed, the mesh closed and wound outward, or sides read
-  // from it mean nothing.
-  if (s.triangles.empty() || !s.allFacesMeshed) return 0;
+  // The mesh closed and wound outward, or sides read from it mean nothing
+  // (a face left unmeshed leaves its neighbours' edges unmatched).
+  if (s.triangles.empty()) return 0;
   std::call_once(s.meshCheckedOnce, [&s] {
     s.meshClosedOutward = closedAndOutward(s.triangles, s.triangleFace, s.topo, s.inwardFaces);
+    s.largestTolerance = largestTolerance(s.solid);
   });
   if (!s.meshClosedOutward) return 0;
   if (w.faces.size() != static_cast<std::size_t>(s.topo.faceCount())) w.faces.resize(s.topo.faceCount());
@@ -661,9 +666,9 @@ int ExactOracle::meshSide(const gp_Pnt& p, double margins) {
     gp_Vec normal = gp_Vec(tri[1] - tri[0]).Crossed(gp_Vec(tri[2] - tri[0]));
     if (normal.Magnitude() <= 1e-300 || !s.faceHasUV[f]) return 0;
     normal.Normalize();
-    if (faceWoundInward(s.topo.face(f), s.inwardFaces)) normal.Reverse();
-    // The face's mesh covers it (area), and this triangle lies along the
-    // exact surface the way it faces (a fold in UV would not).
+    // The face's mesh covers it (area), and this triangle faces as the exact
+    // surface does at its UV centre (BRepMesh winds along the face's
+    // parameters; a fold in UV would not).
     if (s.faceMeshTrusted[f] < 0) s.faceMeshTrusted[f] = faceMeshMatches(s.topo.face(f), s.faceMeshArea[f]) ? 1 : 0;
     if (s.faceMeshTrusted[f] == 0) return 0;
     if (!w.faces[f]) w.faces[f] = std::make_unique<FaceSolver>(s.topo.face(f));
@@ -672,11 +677,9 @@ int ExactOracle::meshSide(const gp_Pnt& p, double margins) {
     gp_Vec su, sv;
     w.faces[f]->surface.D1((uv[0].X() + uv[1].X() + uv[2].X()) / 3, (uv[0].Y() + uv[1].Y() + uv[2].Y()) / 3, q, su,
                            sv);
-    gp_Vec outward = su.Crossed(sv);
-    if (outward.Magnitude() <= 1e-300) return 0;
-    outward.Normalize();
-    if (faceWoundInward(s.topo.face(f), s.inwardFaces)) outward.Reverse();
-    if (normal.Dot(outward) < 0.5) return 0;
+    const gp_Vec surfaceNormal = su.Crossed(sv);
+    if (surfaceNormal.Magnitude() <= 1e-300 || normal.Dot(surfaceNormal) < 0.5 * surfaceNormal.Magnitude()) return 0;
+    if (faceWoundInward(s.topo.face(f), s.inwardFaces)) normal.Reverse();  // now outward
     const std::array<double, 3> b = closestBarycentric(px, tri[0], tri[1], tri[2]);
     const gp_XYZ foot = b[0] * tri[0] + b[1] * tri[1] + b[2] * tri[2];
     auto same = std::find_if(feet.begin(), feet.end(),

@@ -76,6 +76,24 @@ void refuseSpacingBeyondReach(double area, double spacing) {
   throw InputError(kExitUsage, message.str());
 }
 
+// One warning for a feature finer than the finest spacing can follow:
+// "<what><size><unit> at (p) is <finer> than the finest spacing m can
+// follow (it needs n): the axis there is approximate; --spacing s or finer
+// <verb> it", s = n / minSpacingFraction rounded down to 3 digits, so that
+// it does.
+void warnBeyondFinestSpacing(const SamplingContext& ctx, const SamplingParams& params, const char* what, double size,
+                             const char* unit, const gp_Pnt& at, const char* finer, double needs, const char* verb,
+                             SamplingReport& report) {
+  const double needed = needs / params.minSpacingFraction;
+  const double thirdDigit = std::pow(10.0, std::floor(std::log10(needed)) - 2);
+  std::ostringstream message;
+  message << std::setprecision(3) << what << size << unit << " at (" << std::setprecision(7) << at.X() << ", "
+          << at.Y() << ", " << at.Z() << std::setprecision(3) << ") is " << finer << " than the finest spacing " << ctx.minSpacing
+          << " can follow (it needs " << needs << "): the axis there is approximate; --spacing "
+          << std::floor(needed / thirdDigit) * thirdDigit << " or finer " << verb << " it";
+  report.warnings.push_back(message.str());
+}
+
 // A wall thinner than the finest spacing can follow (0.4 × its thickness
 // below h × minSpacingFraction) is sampled too coarsely for the Voronoi
 // facets between its sides to be medial: the axis there is approximate
@@ -88,17 +106,8 @@ void warnAboutUnresolvedWalls(const SamplingContext& ctx, const SamplingParams& 
   const double fraction = FaceSpacingField::kThicknessFraction * ctx.boundsScale;
   if (!thinnest || !(fraction * thinnest->thinnestWall() < ctx.minSpacing)) return;
   const double wall = thinnest->thinnestWall();
-  const gp_Pnt& at = thinnest->thinnestWallAt();
-  // The spacing suggested is rounded down to 3 digits, so that it does resolve the wall.
-  const double needed = fraction * wall / params.minSpacingFraction;
-  const double thirdDigit = std::pow(10.0, std::floor(std::log10(needed)) - 2);
-  std::ostringstream message;
-  message << std::setprecision(3) << "a wall " << wall << " thick at ("
-          << std::setprecision(7) << at.X() << ", " << at.Y() << ", " << at.Z() << std::setprecision(3)
-          << ") is thinner than the finest spacing " << ctx.minSpacing << " can follow (it needs " << fraction * wall
-          << "): the axis there is approximate; --spacing " << std::floor(needed / thirdDigit) * thirdDigit
-          << " or finer resolves it";
-  report.warnings.push_back(message.str());
+  warnBeyondFinestSpacing(ctx, params, "a wall ", wall, " thick", thinnest->thinnestWallAt(), "thinner", fraction * wall,
+                          "resolves", report);
 }
 
 // An edge curved tighter than the finest spacing can follow (eight chords
@@ -113,16 +122,8 @@ void warnAboutUnresolvedCurves(const SamplingContext& ctx, const SamplingParams&
   const double fraction = kChordFraction * ctx.boundsScale;
   if (!(fraction * ctx.tightestEdgeRadius < ctx.minSpacing)) return;
   const double radius = ctx.tightestEdgeRadius;
-  const gp_Pnt& at = ctx.tightestEdgeAt;
-  const double needed = fraction * radius / params.minSpacingFraction;
-  const double thirdDigit = std::pow(10.0, std::floor(std::log10(needed)) - 2);
-  std::ostringstream message;
-  message << std::setprecision(3) << "an edge curved to radius " << radius << " at (" << std::setprecision(7)
-          << at.X() << ", " << at.Y() << ", " << at.Z() << std::setprecision(3)
-          << ") is tighter than the finest spacing " << ctx.minSpacing << " can follow (it needs "
-          << fraction * radius << "): the axis there is approximate; --spacing "
-          << std::floor(needed / thirdDigit) * thirdDigit << " or finer follows it";
-  report.warnings.push_back(message.str());
+  warnBeyondFinestSpacing(ctx, params, "an edge curved to radius ", radius, "", ctx.tightestEdgeAt, "tighter",
+                          fraction * radius, "follows", report);
 }
 
 }  // namespace

@@ -64,4 +64,10 @@ void ScratchDirTest::SetUp() {
 
 void ScratchDirTest::TearDown() { std::filesystem::remove_all(dir_); }
 
+std::string warningContaining(const std::vector<std::string>& warnings, const std::string& text) {
+  for (const std::string& w : warnings)
+    if (w.find(text) != std::string::npos) return w;
+  return "";
+}
+
 }  // namespace cadmedial::test

@@ -23,6 +23,9 @@ std::string publicModelsDir();
 // File names of MANIFEST.tsv rows whose notes contain `tag` (e.g. "set=dev").
 std::vector<std::string> publicModels(const std::string& tag);
 
+// The first of `warnings` that contains `text`, or "" when none does.
+std::string warningContaining(const std::vector<std::string>& warnings, const std::string& text);
+
 // A test with its own empty folder (dir_) under the system's temporary one,
 // named after the suite and the process, removed after the test.
 class ScratchDirTest : public ::testing::Test {

@@ -66,9 +66,7 @@ class SewnFaces : public test::ScratchDirTest {
     return classifier.State();
   }
   static bool warnedOfSewing(const LoadedModel& model) {
-    for (const std::string& w : model.warnings)
-      if (w.find("sewn at tolerance") != std::string::npos) return true;
-    return false;
+    return !test::warningContaining(model.warnings, "sewn at tolerance").empty();
   }
 };
 

@@ -16,6 +16,7 @@
 #include <gp_Ax2.hxx>
 
 #include "cadmedial/sampling.hpp"
+#include "model_fixtures.hpp"
 
 namespace cadmedial {
 namespace {
@@ -25,8 +26,9 @@ constexpr double kPinRadius = 0.05;
 // Samples of edges on a circle of the pin (their points share one z) are
 // never more than a quarter turn apart (chord ≤ √2 r): the circles are split
 // in halves (solid_topology.hpp) and each half has two steps at least.
-void expectCircleChordsWithinAQuarterTurn(const SampleSet& set, int& circleEdges) {
-  circleEdges = 0;
+// Returns how many such edges there are.
+int expectCircleChordsWithinAQuarterTurn(const SampleSet& set) {
+  int circleEdges = 0;
   for (const EdgeInfo& edge : set.edges) {
     if (edge.samples.size() < 2) continue;
     const double z = set.points[edge.samples.front()][2];
@@ -40,12 +42,7 @@ void expectCircleChordsWithinAQuarterTurn(const SampleSet& set, int& circleEdges
       EXPECT_LE(chord, std::sqrt(2.0) * kPinRadius * (1 + 1e-9)) << "edge of length " << edge.length;
     }
   }
-}
-
-std::string warningWith(const SamplingReport& report, const std::string& text) {
-  for (const std::string& w : report.warnings)
-    if (w.find(text) != std::string::npos) return w;
-  return "";
+  return circleEdges;
 }
 
 void expectEveryFaceTriangulated(const SolidSampling& s) {
@@ -59,13 +56,11 @@ TEST(SubSpacingFeatures, NeedleFacesAreAllTriangulatedAndItsHalfCirclesKeepTwoSt
   const TopoDS_Shape needle = BRepPrimAPI_MakeCylinder(kPinRadius, 200).Shape();
   const SolidSampling s = sampleSolid(needle);
   expectEveryFaceTriangulated(s);
-  int circleEdges = 0;
-  expectCircleChordsWithinAQuarterTurn(s.samples, circleEdges);
-  EXPECT_GE(circleEdges, 2);
+  EXPECT_GE(expectCircleChordsWithinAQuarterTurn(s.samples), 2);
   // The wall is thinner, and the circles tighter, than the finest spacing
   // follows, and the run says so.
-  EXPECT_NE(warningWith(s.report, "thinner than"), "");
-  const std::string curve = warningWith(s.report, "an edge curved to radius 0.05 ");
+  EXPECT_NE(test::warningContaining(s.report.warnings, "thinner than"), "");
+  const std::string curve = test::warningContaining(s.report.warnings, "an edge curved to radius 0.05 ");
   ASSERT_NE(curve, "");
   // At the spacing it suggests (8 chords a turn) the circles are followed.
   const std::size_t at = curve.find("--spacing ");
@@ -74,13 +69,13 @@ TEST(SubSpacingFeatures, NeedleFacesAreAllTriangulatedAndItsHalfCirclesKeepTwoSt
   finer.spacing = std::stod(curve.substr(at + 10));
   EXPECT_NEAR(finer.spacing, 16 * 0.8 * kPinRadius, 0.01);
   const SolidSampling fine = sampleSolid(needle, finer);
-  EXPECT_EQ(warningWith(fine.report, "an edge curved"), "");
+  EXPECT_EQ(test::warningContaining(fine.report.warnings, "an edge curved"), "");
   EXPECT_TRUE(fine.report.surface.closedManifold());
 }
 
 TEST(SubSpacingFeatures, CirclesTheSpacingFollowsAreNotWarnedAbout) {
   const SolidSampling s = sampleSolid(BRepPrimAPI_MakeCylinder(10, 20).Shape());
-  EXPECT_EQ(warningWith(s.report, "an edge curved"), "");
+  EXPECT_EQ(test::warningContaining(s.report.warnings, "an edge curved"), "");
   EXPECT_TRUE(s.report.warnings.empty());
 }
 
@@ -90,9 +85,7 @@ TEST(SubSpacingFeatures, PinOnALargePlateIsSampledWithoutLosingAFace) {
   ASSERT_TRUE(fuse.IsDone());
   const SolidSampling s = sampleSolid(fuse.Shape());
   expectEveryFaceTriangulated(s);
-  int circleEdges = 0;
-  expectCircleChordsWithinAQuarterTurn(s.samples, circleEdges);
-  EXPECT_GE(circleEdges, 2);
+  EXPECT_GE(expectCircleChordsWithinAQuarterTurn(s.samples), 2);
 }
 
 }  // namespace
