@@ -23,6 +23,10 @@ parts PASS; steinmetz fails edges (88 %: shallow convex edges, where its
 edges turn tangent); hole_grid's eval did not finish in 15 min, and PASSes
 in 83 s since the point-in-face test asks one hole (2026-12-05;
 ARCHITECTURE.md, Known gaps). perforated_tube (2026-12-05): PASS.
+The third sweep (2026-12-06, needle and after): needle, pin_boss and
+tiny_void PASS at the --spacing their warning names; pinhole stays
+FAIL:topology there; boss and thread PASS; blend_box_hole fails two
+contacts (80 %), knurl edges (87 %); foil is warned of (wall 0.1).
 """
 import math
 import os
@@ -190,6 +194,29 @@ def perforated_tube():
     return tube.cut(Part.makeCompound(holes))
 
 
+def knurl():
+    """A 20 x 20 x 3 plate under 10 x 10 pyramids 2 mm wide, 0.8 mm high:
+    saddle vertices where four convex ridges meet four concave valleys."""
+    base, top = V(0, 0, 3), V(0.99, 0.99, 3.8)
+    square = lambda o, w: Part.makePolygon([o, o + V(w, 0, 0), o + V(w, w, 0), o + V(0, w, 0), o])
+    pyramid_ = Part.makeLoft([square(base, 2), square(top, 0.02)], True, True)
+    part = Part.makeBox(20, 20, 3)
+    for i in range(10):
+        for j in range(10):
+            p = pyramid_.copy()
+            p.translate(V(2 * i, 2 * j, 0))
+            part = part.fuse(p)
+    return part.removeSplitter()
+
+
+def thread():
+    """A coarse triangular thread swept along a helix, fused to its core."""
+    pitch, height, r = 1.5, 7.5, 4.2
+    profile = Part.makePolygon([V(r, 0, -0.6), V(r + 0.8, 0, 0), V(r, 0, 0.6), V(r, 0, -0.6)])
+    sweep = Part.Wire(Part.makeHelix(pitch, height, r)).makePipeShell([profile], True, True)
+    return Part.makeCylinder(r + 0.05, height + 1.2, V(0, 0, -0.6)).fuse(sweep).removeSplitter()
+
+
 PARTS = {
     "sphere": lambda: Part.makeSphere(25),
     "cone_apex": lambda: Part.makeCone(20, 0, 50),
@@ -231,6 +258,19 @@ PARTS = {
     "cross_drilled": cross_drilled,
     "reversed_box": lambda: Part.makeBox(30, 20, 10).reversed(),
     "perforated_tube": perforated_tube,
+    # 2026-12-06: features below the finest spacing (h/16; the needle and the
+    # pin crashed the face triangulation before), and convex edges ending
+    # among concave ones.
+    "needle": lambda: Part.makeCylinder(0.05, 200),
+    "pin_boss": lambda: Part.makeBox(200, 200, 10).fuse(Part.makeCylinder(0.05, 1, V(100, 100, 10))),
+    "pinhole": lambda: Part.makeBox(20, 20, 10).cut(Part.makeCylinder(0.05, 10, V(10, 10, 0))),
+    "tiny_void": lambda: Part.makeBox(100, 100, 100).cut(Part.makeSphere(0.05, V(50, 50, 50))),
+    "foil": lambda: Part.makeBox(100, 100, 0.1),
+    "boss": lambda: Part.makeBox(40, 40, 5).fuse(Part.makeBox(10, 10, 10, V(15, 15, 5))).removeSplitter(),
+    "blend_box_hole": lambda: (lambda b: b.makeFillet(3, b.Edges))(Part.makeBox(30, 20, 10)).cut(
+        Part.makeCylinder(3, 10, V(15, 10, 0))),
+    "knurl": knurl,
+    "thread": thread,
 }
 
 
