@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <vector>
 
 #include "atomic_file.hpp"
@@ -70,10 +71,21 @@ nlohmann::json toJson(const EvaluationReport& r) {
                    {"covered", r.coverage.covered},
                    {"share", r.coverage.share},
                    {"max_gap", std::isfinite(r.coverage.maxGap) ? json(r.coverage.maxGap) : json(nullptr)}};
-  j["attachment"] = {{"convex_edges", r.attachment.convexEdges},   {"convex_length", r.attachment.convexLength},
-                     {"attached_length", r.attachment.attachedLength}, {"edge_share", r.attachment.edgeShare},
-                     {"corners", r.attachment.corners},           {"attached_corners", r.attachment.attachedCorners},
-                     {"corner_share", r.attachment.cornerShare}};
+  // edge_share is over the steep length (creases turning by >= 2θ); the
+  // shallow length, which the θ-filtered axis leaves by design, is reported apart.
+  j["attachment"] = {{"convex_edges", r.attachment.convexEdges},
+                     {"convex_length", r.attachment.convexLength},
+                     {"steep_length", r.attachment.steepLength},
+                     {"attached_length", r.attachment.attachedLength},
+                     {"edge_share", r.attachment.edgeShare},
+                     {"shallow_below_deg", 2 * r.params.thetaDeg},
+                     {"shallow_length", r.attachment.shallowLength},
+                     {"shallow_attached_length", r.attachment.shallowAttachedLength},
+                     {"corners", r.attachment.corners},
+                     {"attached_corners", r.attachment.attachedCorners},
+                     {"corner_share", r.attachment.cornerShare},
+                     {"shallow_corners", r.attachment.shallowCorners},
+                     {"shallow_attached_corners", r.attachment.shallowAttachedCorners}};
   const TopologyMetric& t = r.topology;
   j["topology"] = {{"medial", {{"vertices", t.vertices},
                                {"edges", t.edges},
@@ -120,6 +132,29 @@ void printEvaluationRow(std::FILE* out, const std::string& solid, const Evaluati
 }
 
 namespace {
+
+// The convex length that edges% leaves out, when there is some.
+void printShallowCreases(std::FILE* out, const EvaluationReport& r) {
+  const AttachmentMetric& a = r.attachment;
+  if (!(a.shallowLength > 0) && a.shallowCorners == 0) return;
+  std::fprintf(out,
+               "       shallow creases (turning < %g deg = 2 theta, which the Angle condition cannot see; "
+               "not in edges%% or corners): %.4g of %.4g convex length, %.1f %% attached; %d/%d corners\n",
+               2 * r.params.thetaDeg, a.shallowLength, a.convexLength,
+               a.shallowLength > 0 ? 100 * a.shallowAttachedLength / a.shallowLength : 100.0, a.shallowAttachedCorners,
+               a.shallowCorners);
+}
+
+// The θ that `run` used for this solid (summary.json), if it says.
+std::optional<double> runTheta(const std::string& dir) {
+  std::ifstream in(dir + "/summary.json");
+  if (!in) return std::nullopt;
+  const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  const nlohmann::json::json_pointer at("/parameters/theta_deg");
+  if (summary.is_discarded() || !summary.contains(at) || !summary.at(at).is_number()) return std::nullopt;
+  const double theta = summary.at(at).get<double>();
+  return theta >= 0 && theta < 90 ? std::optional<double>(theta) : std::nullopt;
+}
 
 // OUTDIR must hold what `run` made of this model: eval would otherwise
 // measure another solid's axis against this one and overwrite its eval.json.
@@ -173,11 +208,12 @@ int runEvalCommand(const EvalCommandOptions& options) {
 
   checkOutputsAreOfThisModel(options, model);
 
-  EvaluationParams params;
-  params.toleranceFraction = options.tolerance;
   if (!options.quiet) printEvaluationHeader(stdout);
   bool allPass = true;
   for (std::size_t i = 0; i < model.solids.size(); ++i) {
+    EvaluationParams params;
+    params.toleranceFraction = options.tolerance;
+    params.thetaDeg = runTheta(solidDir(options.outDir, i)).value_or(params.thetaDeg);
     const MedialMesh mesh = readMedialPlyFile(plyPaths[i]);
     const EvaluationReport report = evaluateMedial(model.solids[i], mesh, params);
     nlohmann::json j = toJson(report);
@@ -204,6 +240,7 @@ int runEvalCommand(const EvalCommandOptions& options) {
     writeFileAtomically(solidDir(options.outDir, i) + "/eval.json", [&](std::ofstream& out) { out << j.dump(2) << "\n"; });
     if (!options.quiet) {
       printEvaluationRow(stdout, std::to_string(i), report);
+      printShallowCreases(stdout, report);
       if (j.contains("pair_mesh")) {
         const auto& pm = j["pair_mesh"];
         std::printf("       pair-mesh: %zu tetrahedra, %zu inverted, overlap %.1e, gap %.1e, volume %.6g vs exact %.6g "

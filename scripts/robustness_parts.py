@@ -27,6 +27,9 @@ The third sweep (2026-12-06, needle and after): needle, pin_boss and
 tiny_void PASS at the --spacing their warning names; pinhole stays
 FAIL:topology there; boss and thread PASS; blend_box_hole fails two
 contacts (80 %), knurl edges (87 %); foil is warned of (wall 0.1).
+Since eval measures convex creases turning by less than 2θ apart
+(2026-12-06), steinmetz, loft_circle_square and box_fillet_variable reach
+100 % edges (box_fillet_variable still fails topology, 2,0).
 """
 import math
 import os

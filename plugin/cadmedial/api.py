@@ -529,13 +529,15 @@ def evaluate(source, result, solid=None, tolerance=0.005):
     `solid` of `source` (default: result.solid), as `cadmedial eval` does
     (DESIGN.md section 6). Returns the eval.json dict: inside, medialness,
     coverage, attachment, topology, thresholds and pass (per check and "all").
-    tol = tolerance x the bounding-box diagonal."""
+    tol = tolerance x the bounding-box diagonal. Convex creases turning by
+    less than 2 theta (result's theta) are left out of the edge attachment
+    and reported apart (attachment: shallow_length)."""
     index = result.solid if solid is None else int(solid)
     if index < 0:
         raise ValueError(f"solid must be >= 0, got {index}")
     return _native.evaluate(
         to_source(source), index, result.vertices, result.radius, result.offsets, result.indices,
-        result.sheet, result.provenance, float(tolerance),
+        result.sheet, result.provenance, float(tolerance), float(result.theta),
     )
 
 
@@ -552,6 +554,14 @@ def evaluation_lines(report):
         return "ok" if report["pass"][key] else "FAIL"
 
     med, cov, att, top = report["medialness"], report["coverage"], report["attachment"], report["topology"]
+    shallow = []
+    if att["shallow_length"] > 0 or att["shallow_corners"] > 0:
+        attached = 100 * att["shallow_attached_length"] / att["shallow_length"] if att["shallow_length"] > 0 else 100
+        shallow = [
+            f"shallow creases (turning < {att['shallow_below_deg']:g} deg = 2 theta; left out of the edge and "
+            f"corner figures): {att['shallow_length']:.4g} of {att['convex_length']:.4g} convex length, "
+            f"{attached:.1f} % attached; {att['shallow_attached_corners']}/{att['shallow_corners']} corners"
+        ]
     return [
         f"tol = {report['tolerance']:.4g} ({100 * report['tolerance_fraction']:.2g} % of the diagonal "
         f"{report['diagonal']:.4g})",
@@ -560,7 +570,8 @@ def evaluation_lines(report):
         f"max {100 * med['max']:.3f} % [{mark('medialness')}]",
         f"two contacts: {100 * med['two_contact_share']:.1f} % of vertices [{mark('two_contacts')}]",
         f"coverage: {100 * cov['share']:.2f} % of {cov['points']} boundary points [{mark('coverage')}]",
-        f"convex edges attached: {100 * att['edge_share']:.2f} % of their length [{mark('edges')}]",
+        f"convex edges attached: {100 * att['edge_share']:.2f} % of their steep length [{mark('edges')}]",
+        *shallow,
         f"non-concave corners attached: {att['attached_corners']}/{att['corners']} [{mark('corners')}]",
         f"topology: beta0 {top['medial']['beta0']}, beta1 {top['medial']['beta1']} "
         f"(solid {top['solid']['beta0']}, {top['solid']['beta1']}) [{mark('topology')}]",

@@ -547,9 +547,10 @@ py::object evaluate(const std::string& source, std::size_t solid,
                     const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& indices,
                     const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& sheet,
                     const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& provenance,
-                    double tolerance) {
+                    double tolerance, double theta) {
   if (!(tolerance > 0 && tolerance < 1))
     throw py::value_error("tolerance must be a fraction of the bounding-box diagonal in (0, 1)");
+  if (!(theta >= 0 && theta < 90)) throw py::value_error("theta must be in [0, 90) degrees, got " + std::to_string(theta));
   if (provenance.ndim() != 1 || provenance.shape(0) != sheet.shape(0))
     throw py::value_error("provenance must have one value per polygon");
   const MedialComplex c = complexFromArrays(vertices, radius, offsets, indices, sheet, provenance.data());
@@ -562,6 +563,7 @@ py::object evaluate(const std::string& source, std::size_t solid,
                             std::to_string(input.solids.size()) + " closed solid(s)");
     EvaluationParams params;
     params.toleranceFraction = tolerance;
+    params.thetaDeg = theta;
     report = evaluateMedial(input.solids[solid], toMedialMesh(c), params);
   });
   return jsonToPython(toJson(report));
@@ -630,10 +632,13 @@ triangle_face, spacing, warnings and report (the sampling.json dict).)");
         "command line's format.");
   m.def("evaluate", &evaluate, py::arg("source"), py::arg("solid"), py::arg("vertices"), py::arg("radius"),
         py::arg("offsets"), py::arg("indices"), py::arg("sheet"), py::arg("provenance"), py::arg("tolerance") = 0.005,
+        py::arg("theta") = 5.0,
         R"(Measures a medial axis of solid `solid` of `source` against the exact B-rep
 (DESIGN.md section 6), as `cadmedial eval` does: returns its eval.json dict
 (inside, medialness, coverage, attachment, topology, thresholds, pass).
-tolerance: the fraction of the bounding-box diagonal used as tol.)");
+tolerance: the fraction of the bounding-box diagonal used as tol; theta: the
+Angle threshold the axis was computed with (creases turning by less than
+2 theta are measured apart from the edge attachment).)");
   m.def("compute_points", &computePoints, py::arg("points"), py::arg("triangles") = py::none(),
         py::arg("theta") = 22.5, py::arg("rho") = 8.0, py::arg("progress") = py::none(),
         R"(MEDIAL (seed 000) on points alone: a point cloud (triangles None) gives the whole

@@ -1,6 +1,7 @@
 #include "cadmedial/medial_evaluation.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -150,6 +151,39 @@ struct WeightedPoint {
   double weight;
 };
 
+// A point on a convex edge, with the angle between its two faces' outward
+// normals there (the crease's turn; NaN where a face gives no frame).
+struct EdgePoint : WeightedPoint {
+  double creaseDeg;
+};
+
+double creaseAngleDeg(const SolidTopology& topo, int e, double t) {
+  const auto [fl, fr] = topo.edgeFaces[e];
+  const EdgeFaceFrame a = edgeFaceFrame(topo.edge(e), topo.face(fl), t);
+  const EdgeFaceFrame b = edgeFaceFrame(topo.edge(e), topo.face(fr), t);
+  if (!a.valid || !b.valid) return std::numeric_limits<double>::quiet_NaN();
+  return std::acos(std::clamp(a.outwardNormal.Dot(b.outwardNormal), -1.0, 1.0)) * 180.0 / 3.14159265358979323846;
+}
+
+// A non-concave corner, with the largest crease turn of its convex edges at
+// it: where every convex edge reaching it is shallow there, the θ-filtered
+// axis has no sheet that ends at it. NaN (no frame on some edge) and a
+// corner without convex edges count as steep.
+EdgePoint cornerPoint(const SolidTopology& topo, const std::vector<EdgeFeature>& edges, int v) {
+  const gp_Pnt corner = BRep_Tool::Pnt(TopoDS::Vertex(topo.vertices(v + 1)));
+  double steepest = -1;
+  for (int e : topo.vertexEdges[v]) {
+    if (edges[e].kind != EdgeKind::Convex) continue;
+    BRepAdaptor_Curve curve(topo.edge(e));
+    const double t0 = curve.FirstParameter(), t1 = curve.LastParameter();
+    const double t = curve.Value(t0).SquareDistance(corner) <= curve.Value(t1).SquareDistance(corner) ? t0 : t1;
+    const double crease = creaseAngleDeg(topo, e, t);
+    if (std::isnan(crease)) return {{corner, 1.0}, crease};
+    steepest = std::max(steepest, crease);
+  }
+  return {{corner, 1.0}, steepest < 0 ? std::numeric_limits<double>::infinity() : steepest};
+}
+
 }  // namespace
 
 // --- topology of the medial complex -------------------------------------------
@@ -272,10 +306,10 @@ struct MedialEvaluator::Prepared {
   ExactOracle oracle;
   double diagonal = 0, tolerance = 0;
   std::vector<gp_Pnt> boundary;
-  std::vector<WeightedPoint> edgePoints;  // along convex edges, weight = length represented
+  std::vector<EdgePoint> edgePoints;  // along convex edges, weight = length represented
   int convexEdges = 0;
   double convexLength = 0;
-  std::vector<gp_Pnt> corners;  // non-concave corners
+  std::vector<EdgePoint> corners;  // non-concave corners; creaseDeg: the steepest of their convex edges there
   SolidBetti solid;
   double secondsSetup = 0;
 
@@ -308,12 +342,12 @@ MedialEvaluator::MedialEvaluator(const TopoDS_Shape& solid, const EvaluationPara
     for (int i = 0; i <= n; ++i) {
       const double t = uniform ? abscissa.Parameter(i + 1)
                                : curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n;
-      p.edgePoints.push_back({curve.Value(t), f.length / n * (i == 0 || i == n ? 0.5 : 1.0)});
+      p.edgePoints.push_back({{curve.Value(t), f.length / n * (i == 0 || i == n ? 0.5 : 1.0)}, creaseAngleDeg(topo, e, t)});
     }
   }
   for (int v = 0; v < topo.vertexCount(); ++v)
     if (vertices[v].isCorner && vertices[v].nonConcave)
-      p.corners.push_back(BRep_Tool::Pnt(TopoDS::Vertex(topo.vertices(v + 1))));
+      p.corners.push_back(cornerPoint(topo, edges, v));
 
   p.solid = solidBettiNumbers(p.oracle.solid());
   p.secondsSetup = secondsSince(start);
@@ -473,11 +507,22 @@ EvaluationReport MedialEvaluator::evaluate(const MedialMesh& mesh) const {
     AttachmentMetric& m = rep.attachment;
     m.convexEdges = p.convexEdges;
     m.convexLength = p.convexLength;
-    for (const WeightedPoint& w : p.edgePoints)
-      if (near(w.point)) m.attachedLength += w.weight;
-    m.edgeShare = p.convexLength > 0 ? m.attachedLength / p.convexLength : 1.0;
-    m.corners = static_cast<int>(p.corners.size());
-    for (const gp_Pnt& c : p.corners) m.attachedCorners += near(c);
+    // Where the crease turns by less than 2θ, the Angle condition cannot see
+    // it (seed 002 §4) and the θ-filtered axis ends short of it by design:
+    // that length is measured apart and does not count towards edgeShare.
+    const double shallowBelowDeg = 2 * params.thetaDeg;
+    for (const EdgePoint& w : p.edgePoints) {
+      const bool shallow = w.creaseDeg < shallowBelowDeg;  // NaN (no frame): counted as steep
+      const bool attached = near(w.point);
+      (shallow ? m.shallowLength : m.steepLength) += w.weight;
+      if (attached) (shallow ? m.shallowAttachedLength : m.attachedLength) += w.weight;
+    }
+    m.edgeShare = m.steepLength > 0 ? m.attachedLength / m.steepLength : 1.0;
+    for (const EdgePoint& c : p.corners) {
+      const bool shallow = c.creaseDeg < shallowBelowDeg;  // only shallow convex edges reach it
+      ++(shallow ? m.shallowCorners : m.corners);
+      if (near(c.point)) ++(shallow ? m.shallowAttachedCorners : m.attachedCorners);
+    }
     m.cornerShare = m.corners > 0 ? double(m.attachedCorners) / m.corners : 1.0;
   }
   rep.secondsAttachment = secondsSince(t0);

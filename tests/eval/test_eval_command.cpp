@@ -122,6 +122,27 @@ TEST(EvalCommand, OutputsOfAnotherModelAreRefusedAndEvalJsonIsKept) {
   EXPECT_FALSE(nlohmann::json::parse(written).contains("kept"));
 }
 
+// Shallow creases are those turning by less than 2θ of the run that made
+// the axis: eval reads θ from its summary.json (5° when it says nothing).
+TEST(EvalCommand, ShallowCreaseAngleFollowsTheRunsTheta) {
+  EvalCommandOptions options;
+  options.model = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";
+  options.outDir = freshDir("theta");
+  options.quiet = true;
+  std::filesystem::create_directories(options.outDir + "/solid_0");
+  writeMedialPlyFile(options.outDir + "/solid_0/medial.ply", test::exactBoxAxis(20));
+  auto shallowBelow = [&] {
+    EXPECT_EQ(runEvalCommand(options), kExitOk);
+    std::ifstream in(options.outDir + "/solid_0/eval.json");
+    return nlohmann::json::parse(in).at("attachment").at("shallow_below_deg").get<double>();
+  };
+  EXPECT_DOUBLE_EQ(shallowBelow(), 10.0);
+  nlohmann::json summary;
+  summary["parameters"]["theta_deg"] = 3.5;
+  std::ofstream(options.outDir + "/solid_0/summary.json") << summary.dump(2) << "\n";
+  EXPECT_DOUBLE_EQ(shallowBelow(), 7.0);
+}
+
 TEST(EvalCommand, BadToleranceIsAUsageError) {
   EvalCommandOptions options;
   options.model = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";

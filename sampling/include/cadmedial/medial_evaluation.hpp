@@ -62,6 +62,7 @@ struct EvaluationParams {
   double contactAngleDeg = 10.0;        // "two distinct closest points": angle they subtend at v
   std::size_t topologyCoreLimit = 50000;  // β2 rank computation skipped above this many core polygons
   double smoothAngleDeg = 1.0;          // edge classification, as in sampling
+  double thetaDeg = 5.0;                // the run's Angle threshold: creases turning < 2θ are shallow
   unsigned seed = 1;
   bool parallel = true;                 // TBB over vertices / triangles / boundary points
   EvaluationThresholds thresholds;
@@ -107,10 +108,19 @@ struct CoverageMetric {
 // classifyFeatures counts them) sampled every tol of arc length; a point is
 // attached when within tol of a fan triangle (exact point-triangle distance,
 // CGAL AABB tree). Non-concave corners likewise.
+// Shallow creases: where the two faces' outward normals differ by less than
+// 2θ, the Angle condition cannot select the Voronoi facet that bisects the
+// crease (seed 002 §4: "if the dihedral angle at the convex edge e is more
+// than π − 2θ, the Angle condition ... cannot capture" it), so the θ-filtered
+// axis ends short of such length by design. It is measured apart and left out
+// of edgeShare; so is a corner that only shallow convex edges reach.
 struct AttachmentMetric {
   int convexEdges = 0;
-  double convexLength = 0, attachedLength = 0, edgeShare = 1;
-  int corners = 0, attachedCorners = 0;  // non-concave corners
+  double convexLength = 0;
+  double steepLength = 0, attachedLength = 0, edgeShare = 1;   // crease turn >= 2θ
+  double shallowLength = 0, shallowAttachedLength = 0;         // crease turn < 2θ (not in edgeShare)
+  int corners = 0, attachedCorners = 0;  // non-concave corners reached by a steep convex edge
+  int shallowCorners = 0, shallowAttachedCorners = 0;  // reached by shallow ones only (not in cornerShare)
   double cornerShare = 1;
 };
 
