@@ -7,7 +7,10 @@
 #include <fstream>
 #include <sstream>
 
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
+#include <Bnd_Box.hxx>
+#include <Precision.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
@@ -18,7 +21,10 @@
 #include <IGESControl_Reader.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
+#include <Interface_Check.hxx>
+#include <Interface_CheckIterator.hxx>
 #include <Message_Messenger.hxx>
+#include <OSD_Signal.hxx>
 #include <STEPControl_Reader.hxx>
 #include <ShapeFix_Shape.hxx>
 #include <Standard_Failure.hxx>
@@ -26,8 +32,12 @@
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
+#include <Transfer_TransientProcess.hxx>
+#include <XSControl_TransferReader.hxx>
+#include <XSControl_WorkSession.hxx>
 
 #include "cadmedial/errors.hpp"
+#include "occt_signals.hpp"
 #include "sewn_solids.hpp"
 
 namespace cadmedial {
@@ -53,26 +63,52 @@ void silenceOcctMessages() {
   throw InputError(kExitUnreadableInput, path + ": " + why);
 }
 
-TopoDS_Shape readStep(const std::string& path) {
+// Entities whose translation failed (a misspelt or malformed entity that a
+// shape refers to, a crash in the translator caught as a signal): the
+// shapes that needed them are missing from the result.
+int failedTranslations(const XSControl_Reader& reader) {
+  const Handle(XSControl_WorkSession) session = reader.WS();
+  if (session.IsNull() || session->TransferReader().IsNull()) return 0;
+  const Handle(Transfer_TransientProcess) process = session->TransferReader()->TransientProcess();
+  if (process.IsNull()) return 0;
+  int failed = 0;
+  Interface_CheckIterator checks = process->CheckList(false);
+  for (checks.Start(); checks.More(); checks.Next()) failed += checks.Value()->HasFailed();
+  return failed;
+}
+
+std::string translationFailures(int failed) {
+  return std::to_string(failed) + " entit" + (failed == 1 ? "y" : "ies") + " could not be translated";
+}
+
+// Translates every root; a shape missing for failed entities is a warning
+// when something was translated, the error otherwise.
+TopoDS_Shape transferRoots(XSControl_Reader& reader, const std::string& path, const std::string& format,
+                           std::vector<std::string>& warnings) {
+  reader.TransferRoots();
+  TopoDS_Shape shape = reader.OneShape();
+  const int failed = failedTranslations(reader);
+  if (shape.IsNull())
+    unreadable(path, format + " file holds no geometry that could be translated" +
+                         (failed > 0 ? " (" + translationFailures(failed) + ")" : ""));
+  if (failed > 0) warnings.push_back(translationFailures(failed) + ": the shapes that use them are missing");
+  return shape;
+}
+
+TopoDS_Shape readStep(const std::string& path, std::vector<std::string>& warnings) {
   STEPControl_Reader reader;
   Interface_Static::SetCVal("xstep.cascade.unit", "MM");
   if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
     unreadable(path, "not a readable STEP file (syntax error or truncated)");
   if (reader.NbRootsForTransfer() == 0) unreadable(path, "STEP file holds no shape to transfer");
-  reader.TransferRoots();
-  TopoDS_Shape shape = reader.OneShape();
-  if (shape.IsNull()) unreadable(path, "STEP file holds no geometry that could be translated");
-  return shape;
+  return transferRoots(reader, path, "STEP", warnings);
 }
 
-TopoDS_Shape readIges(const std::string& path) {
+TopoDS_Shape readIges(const std::string& path, std::vector<std::string>& warnings) {
   IGESControl_Reader reader;
   if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
     unreadable(path, "not a readable IGES file (syntax error or truncated)");
-  reader.TransferRoots();
-  TopoDS_Shape shape = reader.OneShape();
-  if (shape.IsNull()) unreadable(path, "IGES file holds no geometry that could be translated");
-  return shape;
+  return transferRoots(reader, path, "IGES", warnings);
 }
 
 TopoDS_Shape readBrepFile(const std::string& path) {
@@ -184,21 +220,47 @@ TopoDS_Solid repairedIfInvalid(const TopoDS_Solid& solid, int index, std::vector
   return solid;
 }
 
+// A solid reaching past what OCCT treats as infinite (Precision::Infinite,
+// 2e100), or with a coordinate that is not a number: only a malformed file
+// gives one (a STEP point at 1e300), squared lengths overflow, and OCCT's
+// point-in-face tests on it did not finish in an hour.
+bool reachesInfinity(const TopoDS_Solid& solid) {
+  Bnd_Box box;
+  BRepBndLib::Add(solid, box, /*useTriangulation=*/false);
+  for (TopExp_Explorer v(solid, TopAbs_VERTEX); v.More(); v.Next()) box.Add(BRep_Tool::Pnt(TopoDS::Vertex(v.Current())));
+  if (box.IsVoid()) return false;
+  if (box.IsOpen()) return true;
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  for (double c : {x0, y0, z0, x1, y1, z1})
+    if (!(std::abs(c) < Precision::Infinite())) return true;
+  return false;
+}
+
 }  // namespace
 
 std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<std::string>* warnings,
                                          std::string* sewing) {
   std::vector<TopoDS_Solid> result;
-  int index = 0;
+  int index = 0, unbounded = 0;
   for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next(), ++index) {
     const TopoDS_Solid& solid = TopoDS::Solid(e.Current());
-    if (hasOnlyClosedShells(solid)) {
+    if (reachesInfinity(solid)) {
+      ++unbounded;
+      if (warnings)
+        warnings->push_back("solid " + std::to_string(index) +
+                            " skipped: it reaches coordinates beyond 2e100 (what OCCT treats as infinite)");
+    } else if (hasOnlyClosedShells(solid)) {
       result.push_back(repairedIfInvalid(solid, index, warnings));
     } else if (warnings) {
       warnings->push_back("solid " + std::to_string(index) + " skipped: its shell is not closed");
     }
   }
   if (!result.empty()) return result;
+  if (unbounded > 0)  // sewing its faces would make the same solid again
+    throw InputError(kExitUnreadableInput, std::to_string(unbounded) +
+                                               " solid(s) reach coordinates beyond 2e100, what OCCT treats as "
+                                               "infinite (a malformed file), and no other closed solid is there");
   // No closed solid: the faces may still close up (surface models).
   SewingOutcome outcome;
   const std::vector<TopoDS_Solid> sewn = solidsSewnFromFaces(shape, &outcome);
@@ -239,22 +301,31 @@ LoadedModel loadModel(const std::string& path) {
   const std::string ext = lowerExtension(path);
   LoadedModel model;
   model.path = path;
+  if (ext != ".step" && ext != ".stp" && ext != ".iges" && ext != ".igs" && ext != ".brep" && ext != ".brp")
+    unreadable(path, "unknown extension '" + ext + "' (expected .step .stp .iges .igs .brep)");
   try {
-    if (ext == ".step" || ext == ".stp")
-      model.shape = readStep(path);
-    else if (ext == ".iges" || ext == ".igs")
-      model.shape = readIges(path);
-    else if (ext == ".brep" || ext == ".brp")
-      model.shape = readBrepFile(path);
-    else
-      unreadable(path, "unknown extension '" + ext + "' (expected .step .stp .iges .igs .brep)");
+    catchingOcctSignals([&] {
+      if (ext == ".step" || ext == ".stp")
+        model.shape = readStep(path, model.warnings);
+      else if (ext == ".iges" || ext == ".igs")
+        model.shape = readIges(path, model.warnings);
+      else
+        model.shape = readBrepFile(path);
+    });
+  } catch (const OSD_Signal& crash) {
+    unreadable(path, std::string("the OCCT reader crashed on this file (") + crash.DynamicType()->Name() +
+                         "): it is malformed or uses what OCCT cannot read");
   } catch (const Standard_Failure& f) {
     unreadable(path, std::string("reader failed: ") + f.GetMessageString());
   }
 
   model.census = takeCensus(model.shape);
   std::string sewing;
-  model.solids = closedSolidsOf(model.shape, &model.warnings, &sewing);
+  try {
+    model.solids = closedSolidsOf(model.shape, &model.warnings, &sewing);
+  } catch (const InputError& e) {
+    throw InputError(e.code(), path + ": " + e.what());
+  }
   if (model.solids.empty())
     throw InputError(kExitNoSolid, path + ": no closed solid; " + describeCensus(model.census) +
                                        (sewing.empty() ? "" : "; " + sewing));

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <BRepBndLib.hxx>
 #include <BRepCheck_Analyzer.hxx>
@@ -19,9 +20,12 @@
 #include <BRepOffsetAPI_MakeThickSolid.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <gp_Pnt.hxx>
 
 #include "cadmedial/brep_io.hpp"
 #include "cadmedial/errors.hpp"
@@ -80,6 +84,66 @@ TEST_F(BadInputs, MissingEmptyTextAndTruncatedFilesAreUnreadable) {
   EXPECT_EQ(codeOf(dir_.string()), kExitUnreadableInput);
   const ExitCode truncated = codeOf(truncatedBox());
   EXPECT_TRUE(truncated == kExitUnreadableInput || truncated == kExitNoSolid) << truncated;
+}
+
+// One misspelt entity name (CARTESIAN_PINT for the box's first point, which
+// its placement refers to) made STEPControl_Reader dereference a null handle:
+// SIGSEGV. Now the translator's crash is caught and the file is unreadable,
+// in the library and in the CLI, and the process lives on to read the next.
+TEST_F(BadInputs, AMisspeltEntityIsAnErrorNotACrash) {
+  std::ifstream in(std::string(CADMEDIAL_MODELS_DIR) + "/box.step", std::ios::binary);
+  std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t at = all.find("CARTESIAN_POINT");
+  ASSERT_NE(at, std::string::npos);
+  const std::string misspelt = write("misspelt.step", all.substr(0, at) + "CARTESIAN_PINT" + all.substr(at + 15));
+  try {
+    loadModel(misspelt);
+    ADD_FAILURE() << "a box without its placement's origin should not load";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.code(), kExitUnreadableInput);
+    EXPECT_NE(std::string(e.what()).find("could not be translated"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(loadModel(write("box.step", all)).solids.size(), 1u);  // the process reads on
+  std::string err;
+  EXPECT_EQ(runCli(misspelt, err), kExitUnreadableInput) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "solid_0" / "samples.ply"));
+}
+
+// A solid reaching past OCCT's infinity (2e100; a STEP point misprinted as
+// 1e300 gave one) is skipped with a warning, and a file of nothing else is
+// unreadable at once: OCCT's point-in-face tests on such a solid had not
+// finished after an hour.
+TEST_F(BadInputs, ASolidReachingInfinityIsSkippedNotRunForever) {
+  // OCCT builds no such solid itself: one vertex of a box's BREP text is moved.
+  auto withAVertexAt1e300 = [](const TopoDS_Shape& shape) {
+    std::ostringstream out;
+    BRepTools::Write(shape, out);
+    std::string text = out.str();
+    const std::size_t vertex = text.find("\nVe\n");
+    const std::size_t point = text.find('\n', vertex + 4) + 1;  // "\nVe\n", the tolerance line, the point
+    return text.replace(point, text.find('\n', point) - point, "1e+300 0 0");
+  };
+  const std::string endless = write("endless.brep", withAVertexAt1e300(BRepPrimAPI_MakeBox(10, 10, 10).Shape()));
+  try {
+    loadModel(endless);
+    ADD_FAILURE() << "a box with a vertex at 1e300 should be refused";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.code(), kExitUnreadableInput);
+    EXPECT_NE(std::string(e.what()).find("2e100"), std::string::npos) << e.what();
+  }
+  std::string err;
+  EXPECT_EQ(runCli(endless, err), kExitUnreadableInput) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+
+  TopoDS_Compound both;
+  BRep_Builder builder;
+  builder.MakeCompound(both);
+  builder.Add(both, BRepPrimAPI_MakeBox(10, 10, 10).Shape());
+  builder.Add(both, BRepPrimAPI_MakeBox(gp_Pnt(20, 0, 0), 10, 10, 10).Shape());
+  const LoadedModel one = loadModel(write("one_endless.brep", withAVertexAt1e300(both)));
+  EXPECT_EQ(one.solids.size(), 1u);
+  EXPECT_NE(test::warningContaining(one.warnings, "skipped: it reaches coordinates beyond 2e100"), "");
 }
 
 TEST_F(BadInputs, ExtensionIsCaseInsensitive) {

@@ -46,7 +46,9 @@ ShapeCensus takeCensus(const TopoDS_Shape& shape);
 // surfaces, a STEP surface model, loose faces) has its faces sewn
 // (sewn_solids.hpp): each closed shell becomes a solid, a warning says so,
 // and *sewing gets one clause on what the sewing did (also when nothing
-// closed, for the caller's error message).
+// closed, for the caller's error message). A solid reaching coordinates
+// beyond 2e100 (Precision::Infinite; a malformed file) is skipped with a
+// warning; when that leaves none, InputError (kExitUnreadableInput).
 std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<std::string>* warnings = nullptr,
                                          std::string* sewing = nullptr);
 
