@@ -223,7 +223,7 @@ TopoDS_Solid repairedIfInvalid(const TopoDS_Solid& solid, int index, std::vector
 // A solid reaching past what OCCT treats as infinite (Precision::Infinite,
 // 2e100), or with a coordinate that is not a number: only a malformed file
 // gives one (a STEP point at 1e300), squared lengths overflow, and OCCT's
-// point-in-face tests on it did not finish in an hour.
+// point-in-face tests on it had not finished after 5 minutes.
 bool reachesInfinity(const TopoDS_Solid& solid) {
   Bnd_Box box;
   BRepBndLib::Add(solid, box, /*useTriangulation=*/false);
@@ -279,7 +279,7 @@ TopoDS_Shape readBrepString(const std::string& brepText) {
   BRep_Builder builder;
   std::istringstream in(brepText);
   try {
-    BRepTools::Read(shape, in, builder);
+    catchingOcctSignals([&] { BRepTools::Read(shape, in, builder); });
   } catch (const Standard_Failure& f) {
     throw InputError(kExitUnreadableInput, std::string("BREP text could not be read: ") + f.GetMessageString());
   }

@@ -113,7 +113,7 @@ TEST_F(BadInputs, AMisspeltEntityIsAnErrorNotACrash) {
 // A solid reaching past OCCT's infinity (2e100; a STEP point misprinted as
 // 1e300 gave one) is skipped with a warning, and a file of nothing else is
 // unreadable at once: OCCT's point-in-face tests on such a solid had not
-// finished after an hour.
+// finished after 5 minutes.
 TEST_F(BadInputs, ASolidReachingInfinityIsSkippedNotRunForever) {
   // OCCT builds no such solid itself: one vertex of a box's BREP text is moved.
   auto withAVertexAt1e300 = [](const TopoDS_Shape& shape) {
