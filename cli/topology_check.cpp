@@ -27,7 +27,7 @@ std::string topologyMismatchWarning(const ComplexTopology& axis, const SolidBett
   }
   char line[360];
   std::snprintf(line, sizeof line,
-                "the axis has %s %s where the solid has %s: a feature is finer than the spacing %.4g resolves (a "
+                "the axis has %s %s where the solid has %s: a feature may be finer than the spacing %.4g resolves (a "
                 "small hole or void, a thin wall, a nearly flat edge); a spacing of %.4g or finer may resolve it",
                 names, axisBetti, solidBetti, spacing, spacing / 2);
   return line;

@@ -1,10 +1,10 @@
 #include "cadmedial/medial_evaluation.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numeric>
 #include <set>
 #include <stdexcept>
