@@ -238,28 +238,31 @@ std::size_t weldCoincidentVertices(MedialComplex& mc, double tolerance, std::siz
   // pair tests and a third of the complex stage at 119 k vertices. The pairs
   // found, and so the clusters, do not depend on u.
   constexpr double ux = 0.8017837257372732, uy = 0.5345224838248488, uz = 0.2672612419124244;  // (3, 2, 1) / sqrt(14)
-  std::vector<double> along(nv, 0.0);
-  std::vector<Index> order;
+  struct Projected {
+    double along;
+    Index vertex;
+    bool operator<(const Projected& o) const { return along < o.along || (along == o.along && vertex < o.vertex); }
+  };
+  std::vector<Projected> order;  // the key beside the index: a sort that reads no other array
   order.reserve(nv);
   for (Index v = 0; v < nv; ++v) {
     const Vec3& p = mc.vertices[v];
     // Samples are distinct points; a non-finite vertex is near nothing (and
     // would break the sort's order).
     if (mc.vertexCell[v] == kNoIndex || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
-    along[v] = ux * p[0] + uy * p[1] + uz * p[2];
-    order.push_back(v);
+    order.push_back({ux * p[0] + uy * p[1] + uz * p[2], v});
   }
-  std::sort(order.begin(), order.end(), [&](Index a, Index b) { return along[a] < along[b] || (along[a] == along[b] && a < b); });
+  std::sort(order.begin(), order.end());
   UnionFind clusters(nv);
   const double limit = tolerance * tolerance;
   constexpr double kRounding = 16 * std::numeric_limits<double>::epsilon();  // of a projection, relative to |p|_1
   for (std::size_t i = 0; i < order.size(); ++i) {
-    const Vec3& p = mc.vertices[order[i]];
+    const Vec3& p = mc.vertices[order[i].vertex];
     const double window = tolerance + kRounding * (std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]) + 4 * tolerance);
-    for (std::size_t j = i + 1; j < order.size() && along[order[j]] - along[order[i]] <= window; ++j) {
-      const Vec3& q = mc.vertices[order[j]];
+    for (std::size_t j = i + 1; j < order.size() && order[j].along - order[i].along <= window; ++j) {
+      const Vec3& q = mc.vertices[order[j].vertex];
       const double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
-      if (dx * dx + dy * dy + dz * dz <= limit) clusters.unite(order[i], order[j]);
+      if (dx * dx + dy * dy + dz * dz <= limit) clusters.unite(order[i].vertex, order[j].vertex);
     }
   }
   std::vector<Index> into(nv, kNoIndex);  // per root, then per vertex: the smallest index of its cluster

@@ -2,6 +2,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "cadmedial/timer.hpp"
@@ -12,6 +14,87 @@ namespace {
 
 constexpr const int* kEdgeI = SelectedFacets::kEdgeI;
 constexpr const int* kEdgeJ = SelectedFacets::kEdgeJ;
+
+// The facets of one block of cell ids, in the order of their lowest cell.
+struct RingBlock {
+  std::vector<std::array<Index, 2>> edge;
+  std::vector<Index> ringLength;
+  std::vector<Index> ringCells;
+  std::vector<std::uint8_t> unbounded;
+};
+
+// Phase 2 of the selection, in parallel over blocks of cell ids and with the
+// sequential result: a selected edge belongs to the lowest finite cell id on
+// its ring (the first cell in id order whose mask has it), found while its
+// ring is circulated. Within a block, the cells of a ring it circulated are
+// marked done so that ring is not circulated again; a ring that reaches into
+// a later block is circulated there once more and left to its owner. Cell
+// ids follow CGAL's cell container, not space, so rings do cross blocks:
+// on the bottle (2.2 M facets) 3.5 M circulations instead of 2.2 M, yet
+// 0.64 s instead of 0.80 s sequentially on 2 cores, and the same facets in
+// the same order.
+void recordRings(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& selectedMask, SelectedFacets& out) {
+  const auto& dt = dv.triangulation();
+  const std::size_t cells = selectedMask.size();
+  constexpr std::size_t kBlock = 1 << 19;
+  std::vector<RingBlock> blocks((cells + kBlock - 1) / kBlock);
+  tbb::parallel_for(std::size_t(0), blocks.size(), [&](std::size_t b) {
+    const std::size_t lo = b * kBlock, hi = std::min(cells, lo + kBlock);
+    std::vector<std::uint8_t> pending(selectedMask.begin() + lo, selectedMask.begin() + hi);
+    RingBlock& block = blocks[b];
+    std::vector<Index> ring;
+    for (std::size_t id = lo; id < hi; ++id) {
+      const auto c = dv.cell(static_cast<Index>(id));
+      for (int e = 0; e < 6; ++e) {
+        if (!(pending[id - lo] & (1u << e))) continue;
+        const auto vp = c->vertex(kEdgeI[e]);
+        const auto vq = c->vertex(kEdgeJ[e]);
+        bool unbounded = false;
+        Index lowest = static_cast<Index>(id);
+        ring.clear();
+        auto circ = dt.incident_cells(c, kEdgeI[e], kEdgeJ[e]);
+        const auto start = circ;
+        do {
+          const Index cid = DelaunayVoronoi::cellId(circ);
+          ring.push_back(cid);
+          if (dv.isInfinite(cid)) {
+            unbounded = true;
+          } else {
+            lowest = std::min(lowest, cid);
+            if (cid >= lo && cid < hi) {
+              const int a = circ->index(vp), bIndex = circ->index(vq);
+              pending[cid - lo] &= static_cast<std::uint8_t>(~(1u << SelectedFacets::cellEdgeBit(a, bIndex)));
+            }
+          }
+          ++circ;
+        } while (circ != start);
+        if (lowest != static_cast<Index>(id)) continue;  // an earlier block's
+        Index p = vp->info(), q = vq->info();
+        if (p > q) std::swap(p, q);
+        block.edge.push_back({p, q});
+        block.ringLength.push_back(static_cast<Index>(ring.size()));
+        block.ringCells.insert(block.ringCells.end(), ring.begin(), ring.end());
+        block.unbounded.push_back(unbounded ? 1 : 0);
+      }
+    }
+  });
+  std::size_t facets = 0, ringCells = 0;
+  for (const RingBlock& block : blocks) {
+    facets += block.edge.size();
+    ringCells += block.ringCells.size();
+  }
+  out.edge.reserve(facets);
+  out.unbounded.reserve(facets);
+  out.ringOffsets.reserve(facets + 1);
+  out.ringCells.reserve(ringCells);
+  for (const RingBlock& block : blocks) {
+    out.edge.insert(out.edge.end(), block.edge.begin(), block.edge.end());
+    out.unbounded.insert(out.unbounded.end(), block.unbounded.begin(), block.unbounded.end());
+    out.ringCells.insert(out.ringCells.end(), block.ringCells.begin(), block.ringCells.end());
+    for (Index length : block.ringLength) out.ringOffsets.push_back(out.ringOffsets.back() + length);
+    for (std::uint8_t u : block.unbounded) out.unboundedCount += u;
+  }
+}
 
 }  // namespace
 
@@ -27,9 +110,8 @@ SelectedFacets selectFacetsByAngleAndRatio(const DelaunayVoronoi& dv, const Umbr
 
   // Phase 1 (parallel): per cell, a 6-bit mask of its edges that pass the
   // test (an edge is tested from each cell around it: O(1) each, no
-  // allocation). Phase 2 (sequential, deterministic): each selected edge is
-  // circulated once, from the lowest cell id that has it, recording its ring
-  // and marking it done in every cell of the ring.
+  // allocation). Phase 2 (recordRings): each selected edge's ring, recorded
+  // from the lowest cell id that has it.
   std::vector<std::uint8_t> selectedMask(cells, 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells, 4096), [&](const tbb::blocked_range<std::size_t>& range) {
     for (std::size_t id = range.begin(); id != range.end(); ++id) {
@@ -54,42 +136,18 @@ SelectedFacets selectFacetsByAngleAndRatio(const DelaunayVoronoi& dv, const Umbr
     }
   });
 
-  out.cellEdgeMask = selectedMask;  // phase 2 clears the bits it has done
+  out.cellEdgeMask = selectedMask;
   out.testSeconds = watch.seconds();
   // Finite edges by Euler's relation on S³ (V − E + F − C = 0 with the
   // infinite vertex, F = 2C) minus the hull vertices (2 + H/2 for H hull
   // triangles = infinite cells): CGAL's number_of_finite_edges() walks all edges.
   const std::size_t hull = cells - dv.finiteCellCount();
   out.finiteEdges = dt.number_of_vertices() + 1 + cells - (2 + hull / 2);
-  out.lookup.reserve(out.finiteEdges / 2 + 16);
-  for (std::size_t id = 0; id < cells; ++id) {
-    const std::uint8_t mask = selectedMask[id];
-    if (mask == 0) continue;
-    const auto c = dv.cell(static_cast<Index>(id));
-    for (int e = 0; e < 6; ++e) {
-      if (!(mask & (1u << e))) continue;
-      const auto vp = c->vertex(kEdgeI[e]);
-      const auto vq = c->vertex(kEdgeJ[e]);
-      Index p = vp->info(), q = vq->info();
-      if (p > q) std::swap(p, q);
-      out.lookup.insert(p, q, static_cast<Index>(out.edge.size()));
-      out.edge.push_back({p, q});
-      bool unbounded = false;
-      auto circ = dt.incident_cells(c, kEdgeI[e], kEdgeJ[e]);
-      const auto start = circ;
-      do {
-        const Index cid = DelaunayVoronoi::cellId(circ);
-        unbounded = unbounded || dv.isInfinite(cid);
-        out.ringCells.push_back(cid);
-        const int a = circ->index(vp), b = circ->index(vq);
-        selectedMask[cid] &= static_cast<std::uint8_t>(~(1u << SelectedFacets::cellEdgeBit(a, b)));
-        ++circ;
-      } while (circ != start);
-      out.ringOffsets.push_back(static_cast<Index>(out.ringCells.size()));
-      out.unbounded.push_back(unbounded ? 1 : 0);
-      out.unboundedCount += unbounded ? 1 : 0;
-    }
-  }
+  recordRings(dv, selectedMask, out);
+  // Sized once for the facets found (half the edges of a part were selected
+  // and more on the bottle: an estimate made the table grow mid-way).
+  out.lookup.reserve(out.edge.size());
+  for (std::size_t f = 0; f < out.edge.size(); ++f) out.lookup.insert(out.edge[f][0], out.edge[f][1], static_cast<Index>(f));
   out.seconds = watch.seconds();
   return out;
 }
