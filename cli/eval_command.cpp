@@ -145,13 +145,18 @@ void printShallowCreases(std::FILE* out, const EvaluationReport& r) {
                a.shallowCorners);
 }
 
-// The θ that `run` used for this solid (summary.json), if it says.
+// The θ that a CAD_MEDIAL `run` used for this solid (summary.json), if it
+// says. Not MEDIAL's (point clouds, 22.5° by default): its creases below 45°
+// would be left out, and its figures would no longer compare with
+// CAD_MEDIAL's on the same solid (bench/medial_vs_cad.py).
 std::optional<double> runTheta(const std::string& dir) {
   std::ifstream in(dir + "/summary.json");
   if (!in) return std::nullopt;
   const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
   const nlohmann::json::json_pointer at("/parameters/theta_deg");
-  if (summary.is_discarded() || !summary.contains(at) || !summary.at(at).is_number()) return std::nullopt;
+  if (summary.is_discarded() || summary.value("algorithm", "") != "CAD_MEDIAL" || !summary.contains(at) ||
+      !summary.at(at).is_number())
+    return std::nullopt;
   const double theta = summary.at(at).get<double>();
   return theta >= 0 && theta < 90 ? std::optional<double>(theta) : std::nullopt;
 }

@@ -24,9 +24,9 @@ struct RingBlock {
 };
 
 // Phase 2 of the selection, in parallel over blocks of cell ids and with the
-// sequential result: a selected edge belongs to the lowest finite cell id on
-// its ring (the first cell in id order whose mask has it), found while its
-// ring is circulated. Within a block, the cells of a ring it circulated are
+// sequential result: a selected edge belongs to the lowest cell id on its
+// ring whose mask has it (the first in id order), found while its ring is
+// circulated. Within a block, the cells of a ring it circulated are
 // marked done so that ring is not circulated again; a ring that reaches into
 // a later block is circulated there once more and left to its owner. Cell
 // ids follow CGAL's cell container, not space, so rings do cross blocks:
@@ -60,11 +60,9 @@ void recordRings(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& sel
           if (dv.isInfinite(cid)) {
             unbounded = true;
           } else {
-            lowest = std::min(lowest, cid);
-            if (cid >= lo && cid < hi) {
-              const int a = circ->index(vp), bIndex = circ->index(vq);
-              pending[cid - lo] &= static_cast<std::uint8_t>(~(1u << SelectedFacets::cellEdgeBit(a, bIndex)));
-            }
+            const auto bit = static_cast<std::uint8_t>(1u << SelectedFacets::cellEdgeBit(circ->index(vp), circ->index(vq)));
+            if (selectedMask[cid] & bit) lowest = std::min(lowest, cid);
+            if (cid >= lo && cid < hi) pending[cid - lo] &= static_cast<std::uint8_t>(~bit);
           }
           ++circ;
         } while (circ != start);

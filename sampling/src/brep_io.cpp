@@ -1,3 +1,6 @@
+// OCC_CATCH_SIGNALS below is a setjmp only with this defined before OCCT's
+// headers (occt_signals.hpp).
+#define OCC_CONVERT_SIGNALS
 #include "cadmedial/brep_io.hpp"
 
 #include <algorithm>
@@ -26,6 +29,7 @@
 #include <Message_Messenger.hxx>
 #include <OSD_Signal.hxx>
 #include <STEPControl_Reader.hxx>
+#include <Standard_ErrorHandler.hxx>
 #include <ShapeFix_Shape.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
@@ -95,8 +99,11 @@ TopoDS_Shape transferRoots(XSControl_Reader& reader, const std::string& path, co
   return shape;
 }
 
+// Each reader sets up its OCC_CATCH_SIGNALS after its locals, so a crash
+// caught there unwinds through them (the reader and its model are freed).
 TopoDS_Shape readStep(const std::string& path, std::vector<std::string>& warnings) {
   STEPControl_Reader reader;
+  OCC_CATCH_SIGNALS
   Interface_Static::SetCVal("xstep.cascade.unit", "MM");
   if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
     unreadable(path, "not a readable STEP file (syntax error or truncated)");
@@ -106,6 +113,7 @@ TopoDS_Shape readStep(const std::string& path, std::vector<std::string>& warning
 
 TopoDS_Shape readIges(const std::string& path, std::vector<std::string>& warnings) {
   IGESControl_Reader reader;
+  OCC_CATCH_SIGNALS
   if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
     unreadable(path, "not a readable IGES file (syntax error or truncated)");
   return transferRoots(reader, path, "IGES", warnings);
@@ -114,6 +122,7 @@ TopoDS_Shape readIges(const std::string& path, std::vector<std::string>& warning
 TopoDS_Shape readBrepFile(const std::string& path) {
   TopoDS_Shape shape;
   BRep_Builder builder;
+  OCC_CATCH_SIGNALS
   if (!BRepTools::Read(shape, path.c_str(), builder) || shape.IsNull())
     unreadable(path, "not a readable BREP file");
   return shape;
@@ -224,10 +233,10 @@ TopoDS_Solid repairedIfInvalid(const TopoDS_Solid& solid, int index, std::vector
 // 2e100), or with a coordinate that is not a number: only a malformed file
 // gives one (a STEP point at 1e300), squared lengths overflow, and OCCT's
 // point-in-face tests on it had not finished after 5 minutes.
-bool reachesInfinity(const TopoDS_Solid& solid) {
+bool reachesInfinity(const TopoDS_Shape& shape) {
   Bnd_Box box;
-  BRepBndLib::Add(solid, box, /*useTriangulation=*/false);
-  for (TopExp_Explorer v(solid, TopAbs_VERTEX); v.More(); v.Next()) box.Add(BRep_Tool::Pnt(TopoDS::Vertex(v.Current())));
+  BRepBndLib::Add(shape, box, /*useTriangulation=*/false);
+  for (TopExp_Explorer v(shape, TopAbs_VERTEX); v.More(); v.Next()) box.Add(BRep_Tool::Pnt(TopoDS::Vertex(v.Current())));
   if (box.IsVoid()) return false;
   if (box.IsOpen()) return true;
   double x0, y0, z0, x1, y1, z1;
@@ -261,7 +270,12 @@ std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<
     throw InputError(kExitUnreadableInput, std::to_string(unbounded) +
                                                " solid(s) reach coordinates beyond 2e100, what OCCT treats as "
                                                "infinite (a malformed file), and no other closed solid is there");
-  // No closed solid: the faces may still close up (surface models).
+  // No closed solid: the faces may still close up (surface models), unless
+  // they reach past infinity too (sewing them would not end well).
+  if (reachesInfinity(shape))
+    throw InputError(kExitUnreadableInput,
+                     "no closed solid, and the faces reach coordinates beyond 2e100, what OCCT treats as infinite "
+                     "(a malformed file)");
   SewingOutcome outcome;
   const std::vector<TopoDS_Solid> sewn = solidsSewnFromFaces(shape, &outcome);
   if (!outcome.tried) return result;
@@ -269,7 +283,15 @@ std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<
   if (!sewn.empty() && warnings)
     warnings->push_back("no closed solid in the input; its faces were " + describeSewing(outcome) + ", made into " +
                         std::to_string(sewn.size()) + " solid(s)");
-  for (std::size_t k = 0; k < sewn.size(); ++k) result.push_back(repairedIfInvalid(sewn[k], static_cast<int>(k), warnings));
+  for (std::size_t k = 0; k < sewn.size(); ++k) {
+    if (reachesInfinity(sewn[k])) {
+      if (warnings)
+        warnings->push_back("sewn solid " + std::to_string(k) +
+                            " skipped: it reaches coordinates beyond 2e100 (what OCCT treats as infinite)");
+      continue;
+    }
+    result.push_back(repairedIfInvalid(sewn[k], static_cast<int>(k), warnings));
+  }
   return result;
 }
 
@@ -279,7 +301,10 @@ TopoDS_Shape readBrepString(const std::string& brepText) {
   BRep_Builder builder;
   std::istringstream in(brepText);
   try {
-    catchingOcctSignals([&] { BRepTools::Read(shape, in, builder); });
+    catchingOcctSignals([&] {
+      OCC_CATCH_SIGNALS
+      BRepTools::Read(shape, in, builder);
+    });
   } catch (const Standard_Failure& f) {
     throw InputError(kExitUnreadableInput, std::string("BREP text could not be read: ") + f.GetMessageString());
   }

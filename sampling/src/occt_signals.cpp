@@ -5,8 +5,11 @@
 #include "occt_signals.hpp"
 
 #include <array>
+#include <cfenv>
 #include <csignal>
 #include <mutex>
+
+#include <pthread.h>
 
 #include <OSD.hxx>
 #include <Standard_ErrorHandler.hxx>
@@ -16,30 +19,64 @@ namespace cadmedial {
 
 namespace {
 
-// Every signal OSD::SetSignal takes over on Linux.
+// Every signal OSD::SetSignal takes over on Linux, and of those the ones a
+// crash raises (the others a user sends: they keep the process's handling).
 constexpr std::array<int, 8> kOsdSignals = {SIGHUP, SIGINT, SIGQUIT, SIGILL, SIGBUS, SIGFPE, SIGSEGV, SIGSYS};
-// Those a user sends on purpose: they keep the process's own handling.
-constexpr std::array<int, 3> kInteractiveSignals = {SIGHUP, SIGINT, SIGQUIT};
+constexpr std::array<int, 5> kCrashSignals = {SIGILL, SIGBUS, SIGFPE, SIGSEGV, SIGSYS};
 
-class SavedHandlers {
+template <std::size_t N>
+std::array<struct sigaction, N> currentActions(const std::array<int, N>& signals) {
+  std::array<struct sigaction, N> actions{};
+  for (std::size_t i = 0; i < N; ++i) sigaction(signals[i], nullptr, &actions[i]);
+  return actions;
+}
+
+template <std::size_t N>
+void install(const std::array<int, N>& signals, const std::array<struct sigaction, N>& actions) {
+  for (std::size_t i = 0; i < N; ++i) sigaction(signals[i], &actions[i], nullptr);
+}
+
+// OCCT's handlers for the crash signals, read once: OSD::SetSignal installs
+// all eight (and sets the FP environment), everything is put back at once.
+const std::array<struct sigaction, kCrashSignals.size()>& occtCrashHandlers() {
+  static const auto handlers = [] {
+    const auto own = currentActions(kOsdSignals);
+    std::fenv_t fpu;
+    std::fegetenv(&fpu);
+    OSD::SetSignal(OSD_SignalMode_Set, /*theFloatingSignal=*/false);
+    const auto occt = currentActions(kCrashSignals);
+    install(kOsdSignals, own);
+    std::fesetenv(&fpu);
+    return occt;
+  }();
+  return handlers;
+}
+
+// The process's state that the work may change: the crash signals'
+// handlers, this thread's signal mask (OCCT's SIGILL and SIGSYS handlers
+// longjmp out with the signal still blocked) and the FP environment.
+class SavedState {
  public:
-  SavedHandlers() {
-    for (std::size_t i = 0; i < kOsdSignals.size(); ++i) sigaction(kOsdSignals[i], nullptr, &saved_[i]);
+  SavedState() : handlers_(currentActions(kCrashSignals)) {
+    pthread_sigmask(SIG_SETMASK, nullptr, &mask_);
+    std::fegetenv(&fpu_);
   }
-  ~SavedHandlers() { restore(kOsdSignals); }
-  template <std::size_t N>
-  void restore(const std::array<int, N>& signals) const {
-    for (int s : signals)
-      for (std::size_t i = 0; i < kOsdSignals.size(); ++i)
-        if (kOsdSignals[i] == s) sigaction(s, &saved_[i], nullptr);
+  ~SavedState() {
+    install(kCrashSignals, handlers_);
+    pthread_sigmask(SIG_SETMASK, &mask_, nullptr);
+    std::fesetenv(&fpu_);
   }
+  SavedState(const SavedState&) = delete;
+  SavedState& operator=(const SavedState&) = delete;
 
  private:
-  std::array<struct sigaction, kOsdSignals.size()> saved_{};
+  std::array<struct sigaction, kCrashSignals.size()> handlers_;
+  sigset_t mask_{};
+  std::fenv_t fpu_{};
 };
 
-// The setjmp frame: a signal during `work` returns here and is rethrown as
-// the OSD_Signal exception the handler recorded.
+// The setjmp frame: a signal during `work` that no inner OCC_CATCH_SIGNALS
+// takes returns here and is rethrown as the OSD_Signal exception recorded.
 void runWithHandler(const std::function<void()>& work) {
   OCC_CATCH_SIGNALS
   work();
@@ -50,9 +87,9 @@ void runWithHandler(const std::function<void()>& work) {
 void catchingOcctSignals(const std::function<void()>& work) {
   static std::mutex oneAtATime;
   const std::lock_guard<std::mutex> lock(oneAtATime);
-  const SavedHandlers saved;
-  OSD::SetSignal(OSD_SignalMode_Set, /*theFloatingSignal=*/false);
-  saved.restore(kInteractiveSignals);
+  const auto& occt = occtCrashHandlers();
+  const SavedState saved;
+  install(kCrashSignals, occt);
   runWithHandler(work);
 }
 

@@ -122,8 +122,9 @@ TEST(EvalCommand, OutputsOfAnotherModelAreRefusedAndEvalJsonIsKept) {
   EXPECT_FALSE(nlohmann::json::parse(written).contains("kept"));
 }
 
-// Shallow creases are those turning by less than 2θ of the run that made
-// the axis: eval reads θ from its summary.json (5° when it says nothing).
+// Shallow creases are those turning by less than 2θ of the CAD_MEDIAL run
+// that made the axis: eval reads θ from its summary.json (5° when it says
+// nothing or the run was MEDIAL's).
 TEST(EvalCommand, ShallowCreaseAngleFollowsTheRunsTheta) {
   EvalCommandOptions options;
   options.model = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";
@@ -138,9 +139,15 @@ TEST(EvalCommand, ShallowCreaseAngleFollowsTheRunsTheta) {
   };
   EXPECT_DOUBLE_EQ(shallowBelow(), 10.0);
   nlohmann::json summary;
+  summary["algorithm"] = "CAD_MEDIAL";
   summary["parameters"]["theta_deg"] = 3.5;
   std::ofstream(options.outDir + "/solid_0/summary.json") << summary.dump(2) << "\n";
   EXPECT_DOUBLE_EQ(shallowBelow(), 7.0);
+  // MEDIAL's θ (22.5° on point clouds) is not taken: its figures compare with CAD_MEDIAL's.
+  summary["algorithm"] = "MEDIAL";
+  summary["parameters"]["theta_deg"] = 22.5;
+  std::ofstream(options.outDir + "/solid_0/summary.json") << summary.dump(2) << "\n";
+  EXPECT_DOUBLE_EQ(shallowBelow(), 10.0);
 }
 
 TEST(EvalCommand, BadToleranceIsAUsageError) {

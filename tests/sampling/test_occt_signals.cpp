@@ -5,6 +5,10 @@
 #include <csignal>
 #include <stdexcept>
 
+#include <pthread.h>
+
+#include <Standard_Failure.hxx>
+
 #include "occt_signals.hpp"
 
 namespace cadmedial {
@@ -50,6 +54,24 @@ TEST_F(OcctSignals, HandlersAreOcctsOnlyWhileTheWorkRuns) {
 
 TEST_F(OcctSignals, HandlersComeBackWhenTheWorkThrows) {
   EXPECT_THROW(catchingOcctSignals([] { throw std::runtime_error("bad file"); }), std::runtime_error);
+  EXPECT_EQ(handlerOf(SIGSEGV), &ownHandler);
+  EXPECT_EQ(handlerOf(SIGINT), &ownHandler);
+}
+
+bool blockedHere(int signal) {
+  sigset_t mask;
+  pthread_sigmask(SIG_SETMASK, nullptr, &mask);
+  return sigismember(&mask, signal) == 1;
+}
+
+// A crash inside the work comes out as OCCT's exception, every time (OCCT's
+// SIGILL and SIGSYS handlers leave their signal blocked: a second one would
+// have killed the process), and the process's handlers come back.
+TEST_F(OcctSignals, ACrashInTheWorkIsAnExceptionEveryTime) {
+  for (int signal : {SIGSEGV, SIGILL, SIGSEGV, SIGILL, SIGFPE, SIGBUS}) {
+    EXPECT_THROW(catchingOcctSignals([signal] { std::raise(signal); }), Standard_Failure) << signal;
+    EXPECT_FALSE(blockedHere(signal)) << signal;
+  }
   EXPECT_EQ(handlerOf(SIGSEGV), &ownHandler);
   EXPECT_EQ(handlerOf(SIGINT), &ownHandler);
 }
