@@ -25,7 +25,7 @@ std::string topologyMismatchWarning(const ComplexTopology& axis, const SolidBett
     std::snprintf(axisBetti, sizeof axisBetti, "%lld", axis.beta0);
     std::snprintf(solidBetti, sizeof solidBetti, "%lld", solid.beta0);
   }
-  char line[360];
+  char line[480];
   std::snprintf(line, sizeof line,
                 "the axis has %s %s where the solid has %s: a feature may be finer than the spacing %.4g resolves (a "
                 "small hole or void, a thin wall, a nearly flat edge); a spacing of %.4g or finer may resolve it",
