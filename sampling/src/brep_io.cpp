@@ -12,9 +12,9 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
+#include <BRepCheck_Analyzer.hxx>
 #include <Bnd_Box.hxx>
 #include <Precision.hxx>
-#include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
 #include <BRepTools.hxx>
@@ -251,11 +251,10 @@ bool reachesInfinity(const TopoDS_Shape& shape) {
 std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<std::string>* warnings,
                                          std::string* sewing) {
   std::vector<TopoDS_Solid> result;
-  int index = 0, unbounded = 0;
+  int index = 0;
   for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next(), ++index) {
     const TopoDS_Solid& solid = TopoDS::Solid(e.Current());
     if (reachesInfinity(solid)) {
-      ++unbounded;
       if (warnings)
         warnings->push_back("solid " + std::to_string(index) +
                             " skipped: it reaches coordinates beyond 2e100 (what OCCT treats as infinite)");
@@ -266,16 +265,13 @@ std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<
     }
   }
   if (!result.empty()) return result;
-  if (unbounded > 0)  // sewing its faces would make the same solid again
-    throw InputError(kExitUnreadableInput, std::to_string(unbounded) +
-                                               " solid(s) reach coordinates beyond 2e100, what OCCT treats as "
-                                               "infinite (a malformed file), and no other closed solid is there");
   // No closed solid: the faces may still close up (surface models), unless
-  // they reach past infinity too (sewing them would not end well).
+  // they reach past infinity (sewing a skipped solid's faces would make it
+  // again). Sewn from faces inside finite bounds, a solid stays inside them.
   if (reachesInfinity(shape))
     throw InputError(kExitUnreadableInput,
-                     "no closed solid, and the faces reach coordinates beyond 2e100, what OCCT treats as infinite "
-                     "(a malformed file)");
+                     "no closed solid within bounds: the shape reaches coordinates beyond 2e100, what OCCT treats "
+                     "as infinite (a malformed file)");
   SewingOutcome outcome;
   const std::vector<TopoDS_Solid> sewn = solidsSewnFromFaces(shape, &outcome);
   if (!outcome.tried) return result;
@@ -283,15 +279,7 @@ std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<
   if (!sewn.empty() && warnings)
     warnings->push_back("no closed solid in the input; its faces were " + describeSewing(outcome) + ", made into " +
                         std::to_string(sewn.size()) + " solid(s)");
-  for (std::size_t k = 0; k < sewn.size(); ++k) {
-    if (reachesInfinity(sewn[k])) {
-      if (warnings)
-        warnings->push_back("sewn solid " + std::to_string(k) +
-                            " skipped: it reaches coordinates beyond 2e100 (what OCCT treats as infinite)");
-      continue;
-    }
-    result.push_back(repairedIfInvalid(sewn[k], static_cast<int>(k), warnings));
-  }
+  for (std::size_t k = 0; k < sewn.size(); ++k) result.push_back(repairedIfInvalid(sewn[k], static_cast<int>(k), warnings));
   return result;
 }
 
@@ -326,16 +314,16 @@ LoadedModel loadModel(const std::string& path) {
   const std::string ext = lowerExtension(path);
   LoadedModel model;
   model.path = path;
-  if (ext != ".step" && ext != ".stp" && ext != ".iges" && ext != ".igs" && ext != ".brep" && ext != ".brp")
-    unreadable(path, "unknown extension '" + ext + "' (expected .step .stp .iges .igs .brep)");
   try {
     catchingOcctSignals([&] {
       if (ext == ".step" || ext == ".stp")
         model.shape = readStep(path, model.warnings);
       else if (ext == ".iges" || ext == ".igs")
         model.shape = readIges(path, model.warnings);
-      else
+      else if (ext == ".brep" || ext == ".brp")
         model.shape = readBrepFile(path);
+      else
+        unreadable(path, "unknown extension '" + ext + "' (expected .step .stp .iges .igs .brep)");
     });
   } catch (const OSD_Signal& crash) {
     unreadable(path, std::string("the OCCT reader crashed on this file (") + crash.DynamicType()->Name() +

@@ -40,6 +40,16 @@ Refusal refusalOf(const EvalCommandOptions& options) {
   return {};
 }
 
+// `eval` on box.step with the exact box axis written as solid 0's medial.ply.
+EvalCommandOptions exactBoxAxisOutputs(const std::string& name) {
+  EvalCommandOptions options;
+  options.model = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";  // 40 x 30 x 20
+  options.outDir = freshDir(name);
+  std::filesystem::create_directories(options.outDir + "/solid_0");
+  writeMedialPlyFile(options.outDir + "/solid_0/medial.ply", test::exactBoxAxis(20));
+  return options;
+}
+
 TEST(EvalCommand, MissingMedialPlyIsAOneLineInputError) {
   EvalCommandOptions options;
   options.model = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";
@@ -67,12 +77,8 @@ TEST(EvalCommand, MalformedMedialPlyNamesTheFile) {
 }
 
 TEST(EvalCommand, ExactBoxAxisWritesPassingEvalJson) {
-  EvalCommandOptions options;
-  options.model = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";
-  options.outDir = freshDir("box");
+  EvalCommandOptions options = exactBoxAxisOutputs("box");
   options.strict = true;
-  std::filesystem::create_directories(options.outDir + "/solid_0");
-  writeMedialPlyFile(options.outDir + "/solid_0/medial.ply", test::exactBoxAxis(20));
   EXPECT_EQ(runEvalCommand(options), kExitOk);
   std::ifstream in(options.outDir + "/solid_0/eval.json");
   ASSERT_TRUE(in);
@@ -97,13 +103,9 @@ void writeRunSummary(const std::string& solidDir, double volume, double area) {
 }
 
 TEST(EvalCommand, OutputsOfAnotherModelAreRefusedAndEvalJsonIsKept) {
-  EvalCommandOptions options;
-  options.model = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";  // 40 x 30 x 20
-  options.outDir = freshDir("another_model");
+  EvalCommandOptions options = exactBoxAxisOutputs("another_model");
   options.quiet = true;
   const std::string solid = options.outDir + "/solid_0";
-  std::filesystem::create_directories(solid);
-  writeMedialPlyFile(solid + "/medial.ply", test::exactBoxAxis(20));
   std::ofstream(solid + "/eval.json") << "{\"kept\": true}\n";
 
   // Another solid's volume: refused before any evaluation, eval.json untouched.
@@ -126,12 +128,8 @@ TEST(EvalCommand, OutputsOfAnotherModelAreRefusedAndEvalJsonIsKept) {
 // that made the axis: eval reads θ from its summary.json (5° when it says
 // nothing or the run was MEDIAL's).
 TEST(EvalCommand, ShallowCreaseAngleFollowsTheRunsTheta) {
-  EvalCommandOptions options;
-  options.model = std::string(CADMEDIAL_MODELS_DIR) + "/box.step";
-  options.outDir = freshDir("theta");
+  EvalCommandOptions options = exactBoxAxisOutputs("theta");
   options.quiet = true;
-  std::filesystem::create_directories(options.outDir + "/solid_0");
-  writeMedialPlyFile(options.outDir + "/solid_0/medial.ply", test::exactBoxAxis(20));
   auto shallowBelow = [&] {
     EXPECT_EQ(runEvalCommand(options), kExitOk);
     std::ifstream in(options.outDir + "/solid_0/eval.json");

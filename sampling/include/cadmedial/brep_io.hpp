@@ -48,8 +48,8 @@ ShapeCensus takeCensus(const TopoDS_Shape& shape);
 // and *sewing gets one clause on what the sewing did (also when nothing
 // closed, for the caller's error message). A solid reaching coordinates
 // beyond 2e100 (Precision::Infinite; a malformed file) is skipped with a
-// warning, sewn or not; when that leaves none, or loose faces reach that
-// far, InputError (kExitUnreadableInput).
+// warning; when that leaves none, the faces are not sewn but refused:
+// InputError (kExitUnreadableInput).
 std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<std::string>* warnings = nullptr,
                                          std::string* sewing = nullptr);
 
