@@ -163,6 +163,7 @@ DelaunayVoronoi::DelaunayVoronoi(const std::vector<Vec3>& points) {
   }
   const std::size_t m = cells_.size();
   infinite_.assign(m, 0);
+  cellSamples_.resize(m);
   center_.resize(m);
   radius_.resize(m);
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -170,6 +171,10 @@ DelaunayVoronoi::DelaunayVoronoi(const std::vector<Vec3>& points) {
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t id = r.begin(); id != r.end(); ++id) {
       Cell_handle c = cells_[id];
+      for (int i = 0; i < 4; ++i) {
+        const Vertex_handle v = c->vertex(i);
+        cellSamples_[id][i] = dt_.is_infinite(v) ? kNoIndex : v->info();
+      }
       if (dt_.is_infinite(c)) {
         infinite_[id] = 1;
         center_[id] = {nan, nan, nan};
@@ -188,12 +193,8 @@ DelaunayVoronoi::DelaunayVoronoi(const std::vector<Vec3>& points) {
 }
 
 bool DelaunayVoronoi::cellHasSample(Index id, Index sample) const {
-  Cell_handle c = cells_[id];
-  for (int i = 0; i < 4; ++i) {
-    Vertex_handle v = c->vertex(i);
-    if (!dt_.is_infinite(v) && v->info() == sample) return true;
-  }
-  return false;
+  const std::array<Index, 4>& s = cellSamples_[id];
+  return sample != kNoIndex && (s[0] == sample || s[1] == sample || s[2] == sample || s[3] == sample);
 }
 
 // Not thread-safe: CGAL's incident-facet walk marks the cells it visits.

@@ -1,3 +1,4 @@
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -78,15 +79,12 @@ InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& 
       const Index k = selected.ringSize(f);
       for (Index t = 0; t < k; ++t) {
         // Consecutive cells share the Delaunay triangle p q x (a Voronoi edge).
-        const auto ca = dv.cell(ring[t]);
-        const auto cb = dv.cell(ring[(t + 1) % k]);
+        const std::array<Index, 4>& a = dv.cellSamples(ring[t]);
+        const std::array<Index, 4>& b = dv.cellSamples(ring[(t + 1) % k]);
         Index x = kNoIndex;
-        for (int i = 0; i < 4; ++i) {
-          const auto vh = ca->vertex(i);
-          if (dv.triangulation().is_infinite(vh)) continue;
-          const Index s = vh->info();
-          if (s == p || s == q) continue;
-          if (cb->has_vertex(vh)) {
+        for (Index s : a) {
+          if (s == kNoIndex || s == p || s == q) continue;
+          if (s == b[0] || s == b[1] || s == b[2] || s == b[3]) {
             x = s;
             break;
           }

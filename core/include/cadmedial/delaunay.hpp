@@ -21,6 +21,7 @@
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
+#include <array>
 #include <vector>
 
 #include "cadmedial/sample_set.hpp"
@@ -62,10 +63,12 @@ class DelaunayVoronoi {
   const Vec3& circumcenter(Index id) const { return center_[id]; }
   double circumradius(Index id) const { return radius_[id]; }
   // Sample index of local vertex i of a cell, kNoIndex for the infinite vertex.
-  Index cellSample(Index id, int i) const {
-    Vertex_handle v = cells_[id]->vertex(i);
-    return dt_.is_infinite(v) ? kNoIndex : v->info();
-  }
+  // Read from a flat copy (16 bytes a cell, in cell-id order): the walk and
+  // the ring passes read a cell's samples without touching CGAL's cell and
+  // vertex records, which lie scattered in memory (two random reads less a
+  // sample).
+  Index cellSample(Index id, int i) const { return cellSamples_[id][i]; }
+  const std::array<Index, 4>& cellSamples(Index id) const { return cellSamples_[id]; }
   bool cellHasSample(Index id, Index sample) const;
   // The finite facets (Delaunay triangles) around sample's vertex, each named
   // from the lower id of its two cells, sorted by (cell id, index). CGAL's own
@@ -90,6 +93,7 @@ class DelaunayVoronoi {
   Triangulation dt_;
   std::vector<Cell_handle> cells_;
   std::vector<std::uint8_t> infinite_;
+  std::vector<std::array<Index, 4>> cellSamples_;
   std::vector<Vec3> center_;
   std::vector<double> radius_;
   std::vector<Vertex_handle> vertex_;
