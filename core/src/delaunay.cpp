@@ -164,6 +164,7 @@ DelaunayVoronoi::DelaunayVoronoi(const std::vector<Vec3>& points) {
   const std::size_t m = cells_.size();
   infinite_.assign(m, 0);
   cellSamples_.resize(m);
+  cellNeighbors_.resize(m);
   center_.resize(m);
   radius_.resize(m);
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -174,6 +175,7 @@ DelaunayVoronoi::DelaunayVoronoi(const std::vector<Vec3>& points) {
       for (int i = 0; i < 4; ++i) {
         const Vertex_handle v = c->vertex(i);
         cellSamples_[id][i] = dt_.is_infinite(v) ? kNoIndex : v->info();
+        cellNeighbors_[id][i] = c->neighbor(i)->info();
       }
       if (dt_.is_infinite(c)) {
         infinite_[id] = 1;

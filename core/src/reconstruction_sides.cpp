@@ -143,7 +143,7 @@ ReconstructionSides reconstructionSides(const SoupTree& mesh, const DelaunayVoro
       if (where[id] == kNone) continue;
       const auto cell = dv.cell(static_cast<Index>(id));
       for (int i = 0; i < 4; ++i) {
-        const std::size_t other = DelaunayVoronoi::cellId(cell->neighbor(i));
+        const std::size_t other = dv.cellNeighbor(static_cast<Index>(id), i);
         if (other <= id || where[other] == kNone) continue;
         if (where[id] == kOutOfBox && where[other] == kOutOfBox) continue;  // both known outside
         if (centre[id] == centre[other]) {
@@ -179,7 +179,7 @@ ReconstructionSides reconstructionSides(const SoupTree& mesh, const DelaunayVoro
   for (std::size_t id = 0; id < m; ++id)
     for (int i = 0; i < 4; ++i)
       if (linked[4 * id + i])
-        groups.unite(static_cast<Index>(id), DelaunayVoronoi::cellId(dv.cell(static_cast<Index>(id))->neighbor(i)));
+        groups.unite(static_cast<Index>(id), dv.cellNeighbor(static_cast<Index>(id), i));
   out.linkSeconds = watch.seconds();
   watch.restart();
 

@@ -69,6 +69,16 @@ class DelaunayVoronoi {
   // sample).
   Index cellSample(Index id, int i) const { return cellSamples_[id][i]; }
   const std::array<Index, 4>& cellSamples(Index id) const { return cellSamples_[id]; }
+  // Id of the cell across local facet i (opposite vertex i), from a flat copy
+  // for the same reason: rings and neighbour links are circulated over ids.
+  Index cellNeighbor(Index id, int i) const { return cellNeighbors_[id][i]; }
+  // The local index of a sample in a cell, -1 if absent.
+  int localIndex(Index id, Index sample) const {
+    const std::array<Index, 4>& s = cellSamples_[id];
+    for (int i = 0; i < 4; ++i)
+      if (s[i] == sample) return i;
+    return -1;
+  }
   bool cellHasSample(Index id, Index sample) const;
   // The finite facets (Delaunay triangles) around sample's vertex, each named
   // from the lower id of its two cells, sorted by (cell id, index). CGAL's own
@@ -94,6 +104,7 @@ class DelaunayVoronoi {
   std::vector<Cell_handle> cells_;
   std::vector<std::uint8_t> infinite_;
   std::vector<std::array<Index, 4>> cellSamples_;
+  std::vector<std::array<Index, 4>> cellNeighbors_;
   std::vector<Vec3> center_;
   std::vector<double> radius_;
   std::vector<Vertex_handle> vertex_;
