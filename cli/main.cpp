@@ -121,6 +121,7 @@ int main(int argc, char** argv) {
       if (keepFringe) run.params.thinFringe = false;
       if (keepTopologyArtefacts) {
         run.params.fillSingleFacetHoles = false;
+        run.params.fillShortHoles = false;
         run.params.islandRadiusFraction = 0;
         run.params.dropPointIslands = false;
         run.params.dropForcedOnlyIslands = false;

@@ -24,7 +24,7 @@ constexpr const char* kVertexProperties[] = {"property double x", "property doub
                                              "property double radius"};
 constexpr const char* kFaceProperties[] = {"property list uchar int vertex_indices", "property int sheet",
                                            "property uchar provenance"};
-constexpr int kMaxProvenance = 3;
+constexpr int kMaxProvenance = 4;
 
 // Reads lines and numbers, and reports errors with the line number.
 class Reader {
@@ -124,7 +124,7 @@ void writeMedialPly(std::ostream& out, const MedialMesh& mesh) {
   std::string text;
   text += "ply\nformat ascii 1.0\n"
           "comment cadmedial medial axis: radius = medial radius; provenance 0 Voronoi facet, 1 convex-edge "
-          "triangle, 2 convex-edge fill, 3 corner triangle\n"
+          "triangle, 2 convex-edge fill, 3 corner triangle, 4 short hole closed\n"
           "element vertex ";
   appendInteger(text, mesh.vertices.size());
   text += '\n';
@@ -208,7 +208,7 @@ MedialMesh readMedialPly(std::istream& in, const std::string& name) {
       corners.push_back(static_cast<std::uint32_t>(r.integer(tok[1 + k], 0, static_cast<long long>(nv) - 1,
                                                              "vertex index")));
     const auto sheet = static_cast<std::int32_t>(r.integer(tok[n + 1], 0, std::numeric_limits<std::int32_t>::max(), "sheet"));
-    const auto origin = static_cast<MedialProvenance>(r.integer(tok[n + 2], 0, kMaxProvenance, "provenance (0..3)"));
+    const auto origin = static_cast<MedialProvenance>(r.integer(tok[n + 2], 0, kMaxProvenance, "provenance (0..4)"));
     mesh.addPolygon(corners, sheet, origin);
   }
   while (r.next(tok))

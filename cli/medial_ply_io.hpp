@@ -5,7 +5,7 @@
 //   element face M:   property list uchar int vertex_indices,
 //                     property int sheet, property uchar provenance
 //                     (0 Voronoi facet of a Delaunay edge, 1 convex-edge triangle,
-//                      2 convex-edge fill triangle, 3 corner triangle)
+//                      2 convex-edge fill triangle, 3 corner triangle, 4 short hole closed)
 #pragma once
 
 #include <istream>

@@ -53,6 +53,7 @@ nlohmann::json medialSummaryJson(const SamplingReport& sampling, const MedialRes
                       {"inner_facets_outside_surface", c.innerFacetsOutsideSurface},
                       {"near_facets_outside_exactly", c.nearFacetsOutsideExactly},
                       {"single_facet_holes_filled", c.singleFacetHolesFilled},
+                      {"short_holes_filled", c.shortHolesFilled},
                       {"fringe_polygons_thinned", c.fringePolygonsThinned},
                       {"sub_resolution_islands", c.subResolutionIslands},
                       {"sub_resolution_island_polygons", c.subResolutionIslandPolygons},

@@ -35,23 +35,10 @@ std::size_t z2Rank(std::vector<std::vector<Index>> columns, std::size_t edgeCoun
 
 }  // namespace
 
-ComplexTopology computeTopology(const MedialComplex& mc, const ComplexEdges& edges, std::size_t coreLimit) {
-  ComplexTopology t;
-  const std::size_t nv = mc.vertices.size();
-  const std::size_t ne = edges.vertices.size();
-  const std::size_t nf = mc.polygonCount();
-  t.vertices = nv;
-  t.edges = ne;
-  t.polygons = nf;
-  t.euler = static_cast<long long>(nv) - static_cast<long long>(ne) + static_cast<long long>(nf);
-
-  // β0: every vertex lies on some polygon, so the edges connect everything.
-  UnionFind uf(nv);
-  long long components = static_cast<long long>(nv);
-  for (const auto& e : edges.vertices)
-    if (uf.unite(e[0], e[1])) --components;
-  t.beta0 = components;
-
+// Elementary collapses: a polygon with a free edge (edge in exactly one
+// remaining polygon) is removed together with that edge, until none has one.
+std::vector<std::uint8_t> collapsedCore(const MedialComplex& mc, const ComplexEdges& edges) {
+  const std::size_t ne = edges.vertices.size(), nf = mc.polygonCount();
   // Edge -> polygons incidence (CSR).
   std::vector<Index> offsets(ne + 1, 0);
   for (Index e : edges.slotEdge) ++offsets[e + 1];
@@ -63,9 +50,6 @@ ComplexTopology computeTopology(const MedialComplex& mc, const ComplexEdges& edg
       for (Index k = mc.polygonOffsets[p]; k < mc.polygonOffsets[p + 1]; ++k)
         incident[fill[edges.slotEdge[k]]++] = static_cast<Index>(p);
   }
-
-  // Elementary collapses: a polygon with a free edge (edge in exactly one
-  // remaining polygon) is removed together with that edge.
   std::vector<Index> count(edges.polygonCount);
   std::vector<std::uint8_t> alive(nf, 1);
   std::vector<Index> queue;
@@ -88,6 +72,27 @@ ComplexTopology computeTopology(const MedialComplex& mc, const ComplexEdges& edg
       if (--count[e2] == 1) queue.push_back(e2);
     }
   }
+  return alive;
+}
+
+ComplexTopology computeTopology(const MedialComplex& mc, const ComplexEdges& edges, std::size_t coreLimit) {
+  ComplexTopology t;
+  const std::size_t nv = mc.vertices.size();
+  const std::size_t ne = edges.vertices.size();
+  const std::size_t nf = mc.polygonCount();
+  t.vertices = nv;
+  t.edges = ne;
+  t.polygons = nf;
+  t.euler = static_cast<long long>(nv) - static_cast<long long>(ne) + static_cast<long long>(nf);
+
+  // β0: every vertex lies on some polygon, so the edges connect everything.
+  UnionFind uf(nv);
+  long long components = static_cast<long long>(nv);
+  for (const auto& e : edges.vertices)
+    if (uf.unite(e[0], e[1])) --components;
+  t.beta0 = components;
+
+  const std::vector<std::uint8_t> alive = collapsedCore(mc, edges);
   std::vector<std::vector<Index>> core;
   for (std::size_t p = 0; p < nf; ++p) {
     if (!alive[p]) continue;

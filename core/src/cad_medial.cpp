@@ -117,6 +117,10 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
 
   watch.restart();
   r.edges = buildComplexEdges(r);
+  if (params.fillShortHoles) {
+    r.counts.shortHolesFilled = fillShortHoles(r, r.edges);
+    if (r.counts.shortHolesFilled > 0) r.edges = buildComplexEdges(r);
+  }
   segmentSheets(r, r.edges);
   r.times.sheets = watch.seconds();
 

@@ -24,7 +24,8 @@ InputError = _native.InputError
 #: Raised when a progress callback returns False or a cancel token is set.
 Cancelled = _native.Cancelled
 
-PROVENANCE_NAMES = ("delaunay_edge_facet", "convex_edge_triangle", "convex_edge_fill", "corner_triangle")
+PROVENANCE_NAMES = (
+    "delaunay_edge_facet", "convex_edge_triangle", "convex_edge_fill", "corner_triangle", "short_hole_fill")
 
 #: Why a point cloud or mesh gets no pair-mesh (compute(..., pair_mesh=True) raises ValueError).
 PAIR_MESH_MESSAGE = (

@@ -507,7 +507,7 @@ MedialComplex complexFromArrays(const py::array_t<double, py::array::c_style | p
     c.sheet.push_back(static_cast<Index>(sheet.data()[p]));
     sheets = std::max(sheets, static_cast<std::size_t>(sheet.data()[p]) + 1);
     const std::int64_t origin = provenance ? provenance[p] : 0;
-    if (origin < 0 || origin > 3) throw py::value_error("provenance values are 0..3");
+    if (origin < 0 || origin > 4) throw py::value_error("provenance values are 0..4");
     c.provenance.push_back(static_cast<PolygonProvenance>(origin));
   }
   for (std::int64_t k = 0; k < ni; ++k) {
@@ -598,7 +598,7 @@ PYBIND11_MODULE(_native, m) {
 Returns a list with one dict per solid: vertices (N x 3), radius (N),
 offsets (P+1) and indices (polygon i = indices[offsets[i]:offsets[i+1]]),
 sheet (P), provenance (P; 0 facet, 1 convex-edge, 2 convex-edge fill,
-3 corner triangle), sheet_count, samples, spacing, beta0, beta1, seconds,
+3 corner triangle, 4 short hole closed), sheet_count, samples, spacing, beta0, beta1, seconds,
 warnings and summary (the summary.json of `cadmedial run`).
 spacing 0 = automatic (bounding-box diagonal / 40); theta in degrees.
 check_inside counts disagreements of the walk with OCCT's exact classifier.

@@ -117,7 +117,7 @@ TEST(MedialPly, MalformedFilesAreRejectedWithLineNumbers) {
   expectRejected(header + "0 0 0 0\n1 0 0 0.5\n0 1 0 0.25\n3 0 1 3 7 1\n", "17: bad vertex index '3'");
   expectRejected(header + "0 0 0 0\n1 0 0 0.5\n0 1 0 0.25\n2 0 1 7 1\n", "17: bad corner count");
   expectRejected(header + "0 0 0 0\n1 0 0 0.5\n0 1 0 0.25\n3 0 1 2 7\n", "17: face 0: expected 6 values");
-  expectRejected(header + "0 0 0 0\n1 0 0 0.5\n0 1 0 0.25\n3 0 1 2 7 4\n", "17: bad provenance");
+  expectRejected(header + "0 0 0 0\n1 0 0 0.5\n0 1 0 0.25\n3 0 1 2 7 5\n", "17: bad provenance");
   expectRejected(header + "0 0 0 0\n1 0 0 0.5\n0 1 0 0.25\n3 0 1 2 -1 0\n", "17: bad sheet");
   expectRejected(header + body + "1 2 3\n", "18: unexpected data after the last face");
   EXPECT_NO_THROW(parse(header + body + "\n\n"));  // trailing blank lines are fine

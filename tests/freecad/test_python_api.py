@@ -41,7 +41,7 @@ def main():
     check(axis.indices.min() >= 0 and axis.indices.max() < axis.vertex_count, "indices in range")
     check(axis.sheet.shape == (axis.polygon_count,) and axis.sheet.max() + 1 == axis.sheet_count,
           f"{axis.sheet_count} sheets")
-    check(set(np.unique(axis.provenance)) <= {0, 1, 2, 3}, "provenance codes 0..3")
+    check(set(np.unique(axis.provenance)) <= {0, 1, 2, 3, 4}, "provenance codes 0..4")
     check(axis.summary["counts"]["medial_polygons"] == axis.polygon_count, "summary dict matches the arrays")
     check(axis.beta0 == 1, f"L-bracket: beta0 {axis.beta0}, beta1 {axis.beta1}")
     bracket = os.path.join(models, "l_bracket.step")

@@ -18,6 +18,7 @@ enum class PolygonProvenance : std::uint8_t {
   ConvexEdgeTriangle = 1,      // s v1 v2, v1v2 dual to the triplet triangle s sL sR (samples s, -)
   ConvexEdgeFillTriangle = 2,  // s s' v, closing the zigzag along a convex edge (samples s, s')
   CornerTriangle = 3,          // p v1 v2 at a non-concave corner p (samples p, -)
+  HoleFill = 4,                // the rim of a short hole in a sheet, closed (short_holes.cpp; samples -, -)
 };
 
 // A forced triangle: its corners are one or two samples and two or one

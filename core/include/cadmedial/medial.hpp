@@ -49,6 +49,7 @@ struct MedialCounts {
   std::size_t innerFacetsOutsideSurface = 0;    // unreached facets relabelled outer (a vertex outside)
   std::size_t nearFacetsOutsideExactly = 0;     // ... (every vertex near outside, the centroid outside exactly)
   std::size_t singleFacetHolesFilled = 0;       // unselected facets closing a one-facet hole
+  std::size_t shortHolesFilled = 0;             // holes whose rim is shorter than a ball on it, closed
   std::size_t fringePolygonsThinned = 0;        // fringe facets collapsed (thinFringe)
   std::size_t subResolutionIslands = 0;         // components dropped (all radii < islandRadiusFraction h)
   std::size_t subResolutionIslandPolygons = 0;  // their polygons

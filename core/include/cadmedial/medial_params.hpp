@@ -42,6 +42,10 @@ struct MedialParams {
   // Close one-facet holes of the inner complex: an unselected Voronoi facet
   // whose every vertex and edge is already on it (facet_holes.cpp).
   bool fillSingleFacetHoles = true;
+  // Close holes in the sheets whose rim (a simple cycle of border edges) is
+  // shorter than the largest medial radius on it: no loop of the true axis
+  // fits in a medial ball (short_holes.cpp).
+  bool fillShortHoles = true;
   // Collapse the fringe of Voronoi facets the Angle condition keeps around
   // 1-D parts of the axis (fillet centre curves, cylinder and torus axes):
   // facets of chords on one smooth surface whose free vertices v have their

@@ -121,6 +121,16 @@ std::size_t thinFringe(MedialComplex& complex, const SampleSet& samples, const F
 
 ComplexEdges buildComplexEdges(const MedialComplex& complex);
 
+// Closes every hole of the complex whose rim is a simple cycle of border
+// edges shorter than the largest medial radius on it, with one HoleFill
+// polygon through the rim's vertices (short_holes.cpp: such a loop bounds a
+// disk inside a medial ball, so it is no loop of the true axis), unless it
+// would close a pocket (the fill is left in the 2-core: β2 would grow
+// instead of β1 shrink). `edges` is buildComplexEdges(complex); rebuild them
+// when something was filled. Returns the number of holes closed; sheets are
+// reset.
+std::size_t fillShortHoles(MedialComplex& complex, const ComplexEdges& edges);
+
 // Sheets = maximal sets of polygons connected across edges shared by exactly
 // two polygons (border edges and non-manifold junction edges separate them).
 void segmentSheets(MedialComplex& complex, const ComplexEdges& edges);
@@ -130,5 +140,9 @@ void segmentSheets(MedialComplex& complex, const ComplexEdges& edges);
 // rank of the boundary matrix of the remaining 2-core (skipped above
 // coreLimit polygons). β1 from the Euler characteristic: β1 = β0 + β2 − χ.
 ComplexTopology computeTopology(const MedialComplex& complex, const ComplexEdges& edges, std::size_t coreLimit);
+
+// Per polygon, 1 if it is left after the elementary collapses above (the
+// 2-core: polygons on closed pockets, and what hangs between them).
+std::vector<std::uint8_t> collapsedCore(const MedialComplex& complex, const ComplexEdges& edges);
 
 }  // namespace cadmedial

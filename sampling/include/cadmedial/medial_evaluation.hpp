@@ -22,6 +22,7 @@ enum class MedialProvenance : std::uint8_t {
   ConvexEdgeTriangle = 1,  // s v1 v2 of ProcConvexEdges
   ConvexEdgeFill = 2,      // s s' v1 / s s'' v2 of ProcConvexEdges
   CornerTriangle = 3,      // p v1 v2 of ProcNonconcaveCorners
+  HoleFill = 4,            // a short hole in a sheet, closed (fillShortHoles)
 };
 
 // An indexed polygon complex with a medial radius per vertex.

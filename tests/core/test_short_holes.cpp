@@ -1,0 +1,106 @@
+// fillShortHoles on hand-built sheets: a hole whose rim is shorter than a
+// medial ball on it is closed; a long rim (a real tunnel), a rim through a
+// pinch vertex and the mouth of a pocket are left open.
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "cadmedial/polygon_complex.hpp"
+
+using namespace cadmedial;
+
+namespace {
+
+// An n x n grid of unit squares in the plane z = 0, every vertex with medial
+// radius `radius`, without the squares (i, j) listed in `missing`.
+MedialComplex gridSheet(int n, double radius, const std::set<std::pair<int, int>>& missing) {
+  MedialComplex mc;
+  auto id = [n](int i, int j) { return Index(i * (n + 1) + j); };
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      mc.vertices.push_back({double(i), double(j), 0});
+      mc.radius.push_back(radius);
+      mc.vertexCell.push_back(id(i, j));
+      mc.vertexSample.push_back(kNoIndex);
+    }
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      if (missing.count({i, j})) continue;
+      for (Index v : {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)}) mc.polygonVertices.push_back(v);
+      mc.polygonOffsets.push_back(Index(mc.polygonVertices.size()));
+      mc.provenance.push_back(PolygonProvenance::DelaunayEdgeFacet);
+      mc.provenanceSamples.push_back({0, 1});
+    }
+  return mc;
+}
+
+long long loopsOf(const MedialComplex& mc) { return computeTopology(mc, buildComplexEdges(mc), 1000).beta1; }
+
+}  // namespace
+
+TEST(ShortHoles, AHoleInsideABallIsClosedByOnePolygonOnItsRim) {
+  // One missing unit square: rim length 4 < radius 5.
+  MedialComplex mc = gridSheet(4, 5.0, {{1, 2}});
+  ASSERT_EQ(loopsOf(mc), 1);
+  const std::size_t polygonsBefore = mc.polygonCount(), verticesBefore = mc.vertices.size();
+  EXPECT_EQ(fillShortHoles(mc, buildComplexEdges(mc)), 1u);
+  EXPECT_EQ(mc.vertices.size(), verticesBefore);  // no vertex added, so medialness is untouched
+  ASSERT_EQ(mc.polygonCount(), polygonsBefore + 1);
+  const std::size_t fill = polygonsBefore;
+  EXPECT_EQ(mc.provenance[fill], PolygonProvenance::HoleFill);
+  EXPECT_EQ(mc.provenanceSamples.size(), mc.polygonCount());
+  const std::set<Index> rim(mc.polygonVertices.begin() + mc.polygonOffsets[fill],
+                            mc.polygonVertices.begin() + mc.polygonOffsets[fill + 1]);
+  EXPECT_EQ(rim, (std::set<Index>{1 * 5 + 2, 2 * 5 + 2, 2 * 5 + 3, 1 * 5 + 3}));
+  EXPECT_EQ(loopsOf(mc), 0);
+}
+
+TEST(ShortHoles, ARimLongerThanEveryBallOnItIsATunnelAndStaysOpen) {
+  // Same hole, radius 3 < rim length 4: the loop may go round a real tunnel.
+  MedialComplex mc = gridSheet(4, 3.0, {{1, 2}});
+  EXPECT_EQ(fillShortHoles(mc, buildComplexEdges(mc)), 0u);
+  EXPECT_EQ(loopsOf(mc), 1);
+  // One large ball on the rim is enough (the fan from it lies inside it).
+  mc.radius[1 * 5 + 2] = 4.5;
+  EXPECT_EQ(fillShortHoles(mc, buildComplexEdges(mc)), 1u);
+  EXPECT_EQ(loopsOf(mc), 0);
+}
+
+TEST(ShortHoles, TwoHolesMeetingAtAVertexAreNotOneRim) {
+  // Squares (1,1) and (2,2) share the vertex (2,2): four border edges there,
+  // no simple cycle, nothing closed.
+  MedialComplex mc = gridSheet(4, 5.0, {{1, 1}, {2, 2}});
+  EXPECT_EQ(fillShortHoles(mc, buildComplexEdges(mc)), 0u);
+}
+
+TEST(ShortHoles, TheMouthOfAPocketStaysOpen) {
+  // A unit cube's surface without its top: closing the mouth would enclose a
+  // void (β2 = 1) instead of removing a loop.
+  MedialComplex mc;
+  for (int k = 0; k < 8; ++k) {
+    mc.vertices.push_back({double(k & 1), double((k >> 1) & 1), double((k >> 2) & 1)});
+    mc.radius.push_back(5);
+    mc.vertexCell.push_back(Index(k));
+    mc.vertexSample.push_back(kNoIndex);
+  }
+  const std::vector<std::vector<Index>> walls = {{0, 1, 3, 2}, {0, 1, 5, 4}, {1, 3, 7, 5}, {3, 2, 6, 7}, {2, 0, 4, 6}};
+  for (const auto& q : walls) {
+    mc.polygonVertices.insert(mc.polygonVertices.end(), q.begin(), q.end());
+    mc.polygonOffsets.push_back(Index(mc.polygonVertices.size()));
+    mc.provenance.push_back(PolygonProvenance::DelaunayEdgeFacet);
+    mc.provenanceSamples.push_back({0, 1});
+  }
+  const std::size_t before = mc.polygonCount();
+  EXPECT_EQ(fillShortHoles(mc, buildComplexEdges(mc)), 0u);
+  EXPECT_EQ(mc.polygonCount(), before);
+  const ComplexTopology t = computeTopology(mc, buildComplexEdges(mc), 1000);
+  EXPECT_EQ(t.beta2, 0);
+}
+
+TEST(ShortHoles, TheOuterRimOfASmallDiskIsNotClosedIntoASphere) {
+  // A lone 1 x 1 sheet under a big ball: its outer border is a short simple
+  // cycle too, but a second polygon on it would enclose a void.
+  MedialComplex mc = gridSheet(1, 5.0, {});
+  EXPECT_EQ(fillShortHoles(mc, buildComplexEdges(mc)), 0u);
+  EXPECT_EQ(mc.polygonCount(), 1u);
+}
