@@ -117,10 +117,7 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
 
   watch.restart();
   r.edges = buildComplexEdges(r);
-  if (params.fillShortHoles) {
-    r.counts.shortHolesFilled = fillShortHoles(r, r.edges);
-    if (r.counts.shortHolesFilled > 0) r.edges = buildComplexEdges(r);
-  }
+  if (params.fillShortHoles) r.counts.shortHolesFilled = fillShortHoles(r, r.edges);
   segmentSheets(r, r.edges);
   r.times.sheets = watch.seconds();
 

@@ -33,7 +33,7 @@ double distance(const Vec3& a, const Vec3& b) {
 // adds no vertex and no edge (medialness, coverage and attachment stay as
 // they are). A rim that is the mouth of a closed pocket is left open:
 // closing it would make a void (β2) of the loop.
-std::size_t fillShortHoles(MedialComplex& mc, const ComplexEdges& edges) {
+std::size_t fillShortHoles(MedialComplex& mc, ComplexEdges& edges) {
   const std::size_t nv = mc.vertices.size(), ne = edges.vertices.size();
   // Border edges per vertex (CSR).
   std::vector<Index> offsets(nv + 1, 0);
@@ -53,13 +53,14 @@ std::size_t fillShortHoles(MedialComplex& mc, const ComplexEdges& edges) {
   auto degree = [&](Index v) { return offsets[v + 1] - offsets[v]; };
 
   std::vector<std::uint8_t> visited(ne, 0);
-  std::vector<Index> rim;
+  std::vector<Index> rim, rimEdges;
   std::size_t filled = 0;
   for (std::size_t start = 0; start < ne; ++start) {
     if (edges.polygonCount[start] != 1 || visited[start]) continue;
     // Walk the rim from edge `start`; give up at a vertex with other than
     // two border edges (the walk still marks what it passed).
     rim.clear();
+    rimEdges.clear();
     bool simple = true;
     double length = 0, largestBall = 0;
     Index e = static_cast<Index>(start), v = edges.vertices[start][0];
@@ -67,6 +68,7 @@ std::size_t fillShortHoles(MedialComplex& mc, const ComplexEdges& edges) {
       visited[e] = 1;
       if (degree(v) != 2) simple = false;
       rim.push_back(v);
+      rimEdges.push_back(e);
       largestBall = std::max(largestBall, mc.radius[v]);
       const Index w = edges.vertices[e][0] == v ? edges.vertices[e][1] : edges.vertices[e][0];
       length += distance(mc.vertices[v], mc.vertices[w]);
@@ -79,6 +81,16 @@ std::size_t fillShortHoles(MedialComplex& mc, const ComplexEdges& edges) {
       v = w;
     }
     if (!simple || v != edges.vertices[start][0] || rim.size() < 3 || !(length < largestBall)) continue;
+    // The fill adds no edge: its rim edges go from border to manifold, and
+    // slot k of the new polygon is rimEdges[k] (from rim[k] to the next).
+    const Index fill = static_cast<Index>(mc.polygonCount());
+    for (Index re : rimEdges) {
+      edges.polygonCount[re] = 2;
+      edges.secondPolygon[re] = fill;
+    }
+    edges.slotEdge.insert(edges.slotEdge.end(), rimEdges.begin(), rimEdges.end());
+    edges.borderEdges -= rimEdges.size();
+    edges.manifoldEdges += rimEdges.size();
     mc.polygonVertices.insert(mc.polygonVertices.end(), rim.begin(), rim.end());
     mc.polygonOffsets.push_back(static_cast<Index>(mc.polygonVertices.size()));
     mc.provenance.push_back(PolygonProvenance::HoleFill);
@@ -90,14 +102,17 @@ std::size_t fillShortHoles(MedialComplex& mc, const ComplexEdges& edges) {
   // trades the loop for a void (NIST CTC-01 had one). Such a fill is not
   // collapsed away from the rest; it is taken out again.
   const std::size_t firstFill = mc.polygonCount() - filled;
-  const std::vector<std::uint8_t> core = collapsedCore(mc, buildComplexEdges(mc));
+  const std::vector<std::uint8_t> core = collapsedCore(mc, edges);
   std::vector<std::uint8_t> keep(mc.polygonCount(), 1);
   for (std::size_t p = firstFill; p < mc.polygonCount(); ++p)
     if (core[p]) {
       keep[p] = 0;
       --filled;
     }
-  if (filled < mc.polygonCount() - firstFill) keepPolygons(mc, keep);
+  if (filled < mc.polygonCount() - firstFill) {
+    keepPolygons(mc, keep);
+    edges = buildComplexEdges(mc);
+  }
   mc.sheet.clear();
   return filled;
 }

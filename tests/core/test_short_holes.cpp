@@ -34,6 +34,24 @@ MedialComplex gridSheet(int n, double radius, const std::set<std::pair<int, int>
   return mc;
 }
 
+std::size_t fillOn(MedialComplex& mc) {
+  ComplexEdges edges = buildComplexEdges(mc);
+  return fillShortHoles(mc, edges);
+}
+
+// fillShortHoles keeps the edge table up to date: the same as built afresh.
+void expectEdgesCurrent(const MedialComplex& mc, const ComplexEdges& edges) {
+  const ComplexEdges fresh = buildComplexEdges(mc);
+  EXPECT_EQ(edges.vertices, fresh.vertices);
+  EXPECT_EQ(edges.polygonCount, fresh.polygonCount);
+  EXPECT_EQ(edges.firstPolygon, fresh.firstPolygon);
+  EXPECT_EQ(edges.secondPolygon, fresh.secondPolygon);
+  EXPECT_EQ(edges.slotEdge, fresh.slotEdge);
+  EXPECT_EQ(edges.borderEdges, fresh.borderEdges);
+  EXPECT_EQ(edges.manifoldEdges, fresh.manifoldEdges);
+  EXPECT_EQ(edges.junctionEdges, fresh.junctionEdges);
+}
+
 long long loopsOf(const MedialComplex& mc) { return computeTopology(mc, buildComplexEdges(mc), 1000).beta1; }
 
 }  // namespace
@@ -43,7 +61,9 @@ TEST(ShortHoles, AHoleInsideABallIsClosedByOnePolygonOnItsRim) {
   MedialComplex mc = gridSheet(4, 5.0, {{1, 2}});
   ASSERT_EQ(loopsOf(mc), 1);
   const std::size_t polygonsBefore = mc.polygonCount(), verticesBefore = mc.vertices.size();
-  EXPECT_EQ(fillShortHoles(mc, buildComplexEdges(mc)), 1u);
+  ComplexEdges edges = buildComplexEdges(mc);
+  EXPECT_EQ(fillShortHoles(mc, edges), 1u);
+  expectEdgesCurrent(mc, edges);
   EXPECT_EQ(mc.vertices.size(), verticesBefore);  // no vertex added, so medialness is untouched
   ASSERT_EQ(mc.polygonCount(), polygonsBefore + 1);
   const std::size_t fill = polygonsBefore;
@@ -58,11 +78,11 @@ TEST(ShortHoles, AHoleInsideABallIsClosedByOnePolygonOnItsRim) {
 TEST(ShortHoles, ARimLongerThanEveryBallOnItIsATunnelAndStaysOpen) {
   // Same hole, radius 3 < rim length 4: the loop may go round a real tunnel.
   MedialComplex mc = gridSheet(4, 3.0, {{1, 2}});
-  EXPECT_EQ(fillShortHoles(mc, buildComplexEdges(mc)), 0u);
+  EXPECT_EQ(fillOn(mc), 0u);
   EXPECT_EQ(loopsOf(mc), 1);
   // One large ball on the rim is enough (the fan from it lies inside it).
   mc.radius[1 * 5 + 2] = 4.5;
-  EXPECT_EQ(fillShortHoles(mc, buildComplexEdges(mc)), 1u);
+  EXPECT_EQ(fillOn(mc), 1u);
   EXPECT_EQ(loopsOf(mc), 0);
 }
 
@@ -70,7 +90,7 @@ TEST(ShortHoles, TwoHolesMeetingAtAVertexAreNotOneRim) {
   // Squares (1,1) and (2,2) share the vertex (2,2): four border edges there,
   // no simple cycle, nothing closed.
   MedialComplex mc = gridSheet(4, 5.0, {{1, 1}, {2, 2}});
-  EXPECT_EQ(fillShortHoles(mc, buildComplexEdges(mc)), 0u);
+  EXPECT_EQ(fillOn(mc), 0u);
 }
 
 TEST(ShortHoles, TheMouthOfAPocketStaysOpen) {
@@ -91,8 +111,10 @@ TEST(ShortHoles, TheMouthOfAPocketStaysOpen) {
     mc.provenanceSamples.push_back({0, 1});
   }
   const std::size_t before = mc.polygonCount();
-  EXPECT_EQ(fillShortHoles(mc, buildComplexEdges(mc)), 0u);
+  ComplexEdges edges = buildComplexEdges(mc);
+  EXPECT_EQ(fillShortHoles(mc, edges), 0u);  // filled, then taken out again
   EXPECT_EQ(mc.polygonCount(), before);
+  expectEdgesCurrent(mc, edges);
   const ComplexTopology t = computeTopology(mc, buildComplexEdges(mc), 1000);
   EXPECT_EQ(t.beta2, 0);
 }
@@ -101,6 +123,6 @@ TEST(ShortHoles, TheOuterRimOfASmallDiskIsNotClosedIntoASphere) {
   // A lone 1 x 1 sheet under a big ball: its outer border is a short simple
   // cycle too, but a second polygon on it would enclose a void.
   MedialComplex mc = gridSheet(1, 5.0, {});
-  EXPECT_EQ(fillShortHoles(mc, buildComplexEdges(mc)), 0u);
+  EXPECT_EQ(fillOn(mc), 0u);
   EXPECT_EQ(mc.polygonCount(), 1u);
 }

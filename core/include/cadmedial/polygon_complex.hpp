@@ -126,10 +126,9 @@ ComplexEdges buildComplexEdges(const MedialComplex& complex);
 // polygon through the rim's vertices (short_holes.cpp: such a loop bounds a
 // disk inside a medial ball, so it is no loop of the true axis), unless it
 // would close a pocket (the fill is left in the 2-core: β2 would grow
-// instead of β1 shrink). `edges` is buildComplexEdges(complex); rebuild them
-// when something was filled. Returns the number of holes closed; sheets are
-// reset.
-std::size_t fillShortHoles(MedialComplex& complex, const ComplexEdges& edges);
+// instead of β1 shrink). `edges` is buildComplexEdges(complex) and is kept
+// up to date. Returns the number of holes closed; sheets are reset.
+std::size_t fillShortHoles(MedialComplex& complex, ComplexEdges& edges);
 
 // Sheets = maximal sets of polygons connected across edges shared by exactly
 // two polygons (border edges and non-manifold junction edges separate them).
