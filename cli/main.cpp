@@ -46,7 +46,8 @@ int main(int argc, char** argv) {
   runCmd->add_option("--rho", run.params.rho, "Ratio condition threshold (default 8)")->check(CLI::PositiveNumber);
   bool keepTopologyArtefacts = false;
   runCmd->add_flag("--keep-topology-artefacts", keepTopologyArtefacts,
-                   "Neither close one-facet holes nor drop one-point, forced-only or sub-resolution islands of the inner axis "
+                   "Neither close one-facet or short holes nor drop one-point, forced-only, sub-resolution or nested islands of "
+                   "the inner axis "
                    "(to see the raw Angle/Ratio selection; ARCHITECTURE.md)");
   bool keepFringe = false;
   runCmd->add_flag("--keep-fringe", keepFringe,
@@ -125,6 +126,7 @@ int main(int argc, char** argv) {
         run.params.islandRadiusFraction = 0;
         run.params.dropPointIslands = false;
         run.params.dropForcedOnlyIslands = false;
+        run.params.dropNestedIslands = false;
       }
       return runRunCommand(run);
     }

@@ -59,6 +59,7 @@ nlohmann::json medialSummaryJson(const SamplingReport& sampling, const MedialRes
                       {"sub_resolution_island_polygons", c.subResolutionIslandPolygons},
                       {"point_islands_dropped", c.pointIslands},
                       {"forced_only_islands_dropped", c.forcedOnlyIslands},
+                      {"nested_islands_dropped", c.nestedIslands},
                       {"coincident_vertices_welded", c.coincidentVerticesWelded},
                       {"degenerate_facets_dropped", c.degenerateFacetsDropped},
                       {"walk_oracle_checked", c.oracleChecked},

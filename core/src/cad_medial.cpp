@@ -109,6 +109,10 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
     r.counts.subResolutionIslands =
         dropSubResolutionIslands(r, params.islandRadiusFraction * spacing, &r.counts.subResolutionIslandPolygons);
   }
+  if (params.dropNestedIslands && spacing > 0) {
+    r.counts.nestedIslands = dropNestedIslands(r, std::cos(params.fringeBetaDeg * 3.14159265358979323846 / 180.0),
+                                               params.fringeSlackFraction * spacing, nullptr);
+  }
   // After the rules above, which read one vertex per cell. Voronoi vertices
   // this close are one (cospherical samples).
   r.counts.coincidentVerticesWelded =

@@ -198,6 +198,53 @@ TEST(Topology, ForcedOnlyIslandsAreDroppedButNeverTheLargestComponent) {
   EXPECT_EQ(allForced.polygonCount(), 2u);
 }
 
+TEST(Topology, IslandsWhoseBallsNestInTheMainAxisAreDropped) {
+  // Main axis A (vertices 0-3 on the x axis, radius 3) and island B, one
+  // facet beside A's end with balls of radius 1: each lies within 0.5 of
+  // vertex 3, so r_3 - r_v = 2 >= |3 - v|: nested.
+  const double cos20 = std::cos(20 * 3.14159265358979323846 / 180), slack = 0.01;
+  auto twoComponents = []() {
+    MedialComplex mc = complexOf(7, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}});
+    for (Index v : {0, 1, 2, 3}) mc.radius[v] = 3;
+    mc.vertices[4] = {3, 0.5, 0};
+    mc.vertices[5] = {3.5, 0, 0};
+    mc.vertices[6] = {3, -0.5, 0};
+    return mc;
+  };
+  MedialComplex mc = twoComponents();
+  std::size_t removed = 0;
+  EXPECT_EQ(dropNestedIslands(mc, cos20, slack, &removed), 1u);
+  EXPECT_EQ(removed, 1u);
+  ASSERT_EQ(mc.vertices.size(), 4u);
+  EXPECT_EQ(mc.polygonCount(), 2u);
+  EXPECT_EQ(topologyOf(mc).beta0, 1);
+
+  // One ball that reaches out of every ball of A keeps the island: it adds
+  // to the union (r 3.5 at distance 0.5 from r 3).
+  MedialComplex bigBall = twoComponents();
+  bigBall.radius[5] = 3.5;
+  EXPECT_EQ(dropNestedIslands(bigBall, cos20, slack, nullptr), 0u);
+  EXPECT_EQ(topologyOf(bigBall).beta0, 2);
+
+  // Far from A, balls as small are not nested either.
+  MedialComplex far = twoComponents();
+  far.vertices[5] = {9, 0, 0};
+  EXPECT_EQ(dropNestedIslands(far, cos20, slack, nullptr), 0u);
+
+  // An island with a forced triangle holds an edge's attachment: kept.
+  MedialComplex forced = twoComponents();
+  forced.provenance[2] = PolygonProvenance::ConvexEdgeTriangle;
+  EXPECT_EQ(dropNestedIslands(forced, cos20, slack, nullptr), 0u);
+
+  // The component with the most polygons is the main axis even when its
+  // balls nest in the island's.
+  MedialComplex small = twoComponents();
+  for (Index v : {0, 1, 2, 3}) small.radius[v] = 0.1;
+  for (Index v : {4, 5, 6}) small.radius[v] = 5;
+  EXPECT_EQ(dropNestedIslands(small, cos20, slack, nullptr), 0u);
+  EXPECT_EQ(small.polygonCount(), 3u);
+}
+
 TEST(Topology, CoincidentVoronoiVerticesAreWeldedIntoOne) {
   // A strip of two triangles that meet at 0 and at a point held twice, as
   // cells 2 and 3 whose circumcenters are 1e-14 apart (cospherical

@@ -83,6 +83,22 @@ TEST(FilletedBox, AxisIsOneComponentWithoutLoops) {
   EXPECT_EQ(m.topology.beta1, 0);
 }
 
+TEST(FilletedBox, VariableFilletsLeaveNoNestedIsland) {
+  // Every edge of a 60 x 40 x 30 box filleted from radius 1.5 to 5: at one
+  // corner blend the filter kept a single facet (r up to 3.3) apart from
+  // the rest, its balls inside the main axis's (β0 = 2, 2026-12-06; dropped
+  // as a nested island since).
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(60, 40, 30).Shape();
+  BRepFilletAPI_MakeFillet fillet(box);
+  for (TopExp_Explorer e(box, TopAbs_EDGE); e.More(); e.Next()) fillet.Add(1.5, 5.0, TopoDS::Edge(e.Current()));
+  const SolidSampling s = sampleSolid(fillet.Shape());
+  const MedialResult m = computeCadMedial(s.samples);
+  std::printf("variable fillets: %zu polygons, b0 %lld b1 %lld, nested islands dropped %zu\n", m.polygonCount(),
+              m.topology.beta0, m.topology.beta1, m.counts.nestedIslands);
+  EXPECT_EQ(m.topology.beta0, 1);
+  EXPECT_EQ(m.topology.beta1, 0);
+}
+
 // How far a point is from the exact medial axis of the rounded box, which is
 // the axis of the inner box [r, size - r] (with the same contacts moved out
 // by r): outside the inner box, its distance to it (the fillets' centre

@@ -55,6 +55,7 @@ struct MedialCounts {
   std::size_t subResolutionIslandPolygons = 0;  // their polygons
   std::size_t pointIslands = 0;                 // components dropped that are one point (zero-size facets)
   std::size_t forcedOnlyIslands = 0;            // components dropped that have no Voronoi facet
+  std::size_t nestedIslands = 0;                // components dropped whose balls nest in the main axis's
   std::size_t coincidentVerticesWelded = 0;     // Voronoi vertices joined to a coincident one (cospherical samples)
   std::size_t degenerateFacetsDropped = 0;      // inner facets the weld left a segment or a point, or made equal to another polygon
   std::size_t oracleChecked = 0;          // bounded selected facets checked by the inside oracle

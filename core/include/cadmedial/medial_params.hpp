@@ -76,6 +76,11 @@ struct MedialParams {
   // Voronoi facet: the sheet they complete was pruned by the filter) is
   // dropped, never the largest one.
   bool dropForcedOnlyIslands = true;
+  // Drop components (not the largest, no forced triangle) whose balls all
+  // nest in the main axis's, by the fringe's dominance rule (fringeBetaDeg,
+  // fringeSlackFraction h): they add nothing to the union of balls
+  // (small_islands.cpp).
+  bool dropNestedIslands = true;
   // Compute β2 (and so β1) exactly only while the 2-core left after free-face
   // collapses has at most this many polygons; otherwise β1 = β2 = -1.
   std::size_t bettiCoreLimit = 200000;

@@ -87,6 +87,14 @@ std::size_t dropPointIslands(MedialComplex& complex, double tolerance, std::size
 // *polygonsRemoved their polygons.
 std::size_t dropForcedOnlyIslands(MedialComplex& complex, std::size_t* polygonsRemoved);
 
+// Removes every connected component, except the one with the most polygons,
+// that has no forced triangle and whose every vertex v is dominated by a
+// vertex u of that one: r_u - r_v + slack >= cosBeta |u - v| (its balls nest
+// in the main axis's, see small_islands.cpp), and the vertices no polygon
+// uses any more. Returns the number of components removed; *polygonsRemoved
+// their polygons.
+std::size_t dropNestedIslands(MedialComplex& complex, double cosBeta, double slack, std::size_t* polygonsRemoved);
+
 // Joins Voronoi vertices closer than `tolerance` (cospherical samples: one
 // vertex, several cells, circumcenters apart by rounding) into the first of
 // them; drops zero-length polygon edges and polygons left with fewer than
