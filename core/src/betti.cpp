@@ -37,42 +37,54 @@ std::size_t z2Rank(std::vector<std::vector<Index>> columns, std::size_t edgeCoun
 
 // Elementary collapses: a polygon with a free edge (edge in exactly one
 // remaining polygon) is removed together with that edge, until none has one.
-std::vector<std::uint8_t> collapsedCore(const MedialComplex& mc, const ComplexEdges& edges) {
+FreeFaceCollapse::FreeFaceCollapse(const MedialComplex& mc, const ComplexEdges& edges)
+    : mc_(mc), edges_(edges), count_(edges.polygonCount), alive_(mc.polygonCount(), 1) {
   const std::size_t ne = edges.vertices.size(), nf = mc.polygonCount();
   // Edge -> polygons incidence (CSR).
-  std::vector<Index> offsets(ne + 1, 0);
-  for (Index e : edges.slotEdge) ++offsets[e + 1];
-  for (std::size_t e = 0; e < ne; ++e) offsets[e + 1] += offsets[e];
-  std::vector<Index> incident(edges.slotEdge.size());
+  offsets_.assign(ne + 1, 0);
+  for (Index e : edges.slotEdge) ++offsets_[e + 1];
+  for (std::size_t e = 0; e < ne; ++e) offsets_[e + 1] += offsets_[e];
+  incident_.resize(edges.slotEdge.size());
   {
-    std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
+    std::vector<Index> fill(offsets_.begin(), offsets_.end() - 1);
     for (std::size_t p = 0; p < nf; ++p)
       for (Index k = mc.polygonOffsets[p]; k < mc.polygonOffsets[p + 1]; ++k)
-        incident[fill[edges.slotEdge[k]]++] = static_cast<Index>(p);
+        incident_[fill[edges.slotEdge[k]]++] = static_cast<Index>(p);
   }
-  std::vector<Index> count(edges.polygonCount);
-  std::vector<std::uint8_t> alive(nf, 1);
-  std::vector<Index> queue;
   for (std::size_t e = 0; e < ne; ++e)
-    if (count[e] == 1) queue.push_back(static_cast<Index>(e));
-  while (!queue.empty()) {
-    const Index e = queue.back();
-    queue.pop_back();
-    if (count[e] != 1) continue;
-    Index poly = kNoIndex;
-    for (Index k = offsets[e]; k < offsets[e + 1]; ++k)
-      if (alive[incident[k]]) {
-        poly = incident[k];
+    if (count_[e] == 1) queue_.push_back(static_cast<Index>(e));
+  collapse();
+}
+
+void FreeFaceCollapse::removeFromCore(Index polygon) {
+  if (!alive_[polygon]) return;
+  takeOut(polygon);
+  collapse();
+}
+
+void FreeFaceCollapse::takeOut(Index polygon) {
+  alive_[polygon] = 0;
+  for (Index k = mc_.polygonOffsets[polygon]; k < mc_.polygonOffsets[polygon + 1]; ++k) {
+    const Index e = edges_.slotEdge[k];
+    if (--count_[e] == 1) queue_.push_back(e);
+  }
+}
+
+void FreeFaceCollapse::collapse() {
+  while (!queue_.empty()) {
+    const Index e = queue_.back();
+    queue_.pop_back();
+    if (count_[e] != 1) continue;
+    for (Index k = offsets_[e]; k < offsets_[e + 1]; ++k)
+      if (alive_[incident_[k]]) {
+        takeOut(incident_[k]);
         break;
       }
-    if (poly == kNoIndex) continue;
-    alive[poly] = 0;
-    for (Index k = mc.polygonOffsets[poly]; k < mc.polygonOffsets[poly + 1]; ++k) {
-      const Index e2 = edges.slotEdge[k];
-      if (--count[e2] == 1) queue.push_back(e2);
-    }
   }
-  return alive;
+}
+
+std::vector<std::uint8_t> collapsedCore(const MedialComplex& mc, const ComplexEdges& edges) {
+  return FreeFaceCollapse(mc, edges).core();
 }
 
 ComplexTopology computeTopology(const MedialComplex& mc, const ComplexEdges& edges, std::size_t coreLimit) {

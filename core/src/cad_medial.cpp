@@ -44,7 +44,7 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
     throw std::invalid_argument("computeCadMedial: triangulation and SampleSet differ in size");
   if (!(params.thetaDeg > 0 && params.thetaDeg < 90)) throw std::invalid_argument("MedialParams: theta must be in (0°, 90°)");
   if (!(params.rho > 0)) throw std::invalid_argument("MedialParams: rho must be positive");
-  if (params.thinFringe && !(params.fringeBetaDeg > 0 && params.fringeBetaDeg < 90 && params.fringeSlackFraction >= 0 &&
+  if ((params.thinFringe || params.dropNestedIslands) && !(params.fringeBetaDeg > 0 && params.fringeBetaDeg < 90 && params.fringeSlackFraction >= 0 &&
                              params.fringeMinReachFraction > 0))
     throw std::invalid_argument("MedialParams: fringe beta must be in (0°, 90°), slack >= 0, min reach > 0");
 

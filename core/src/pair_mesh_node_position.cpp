@@ -131,6 +131,8 @@ std::optional<Vec3> nearestValidNodePosition(const std::vector<Vec3>& nodes, Ind
   // inverted counts, samplings and volumes on the bundled, public and 47
   // robustness parts.
   if (solution && !((*solution)[3] > 1e-9)) return std::nullopt;
+  // When the doubles give up (rare) the exact answer is all there is, and
+  // any positive margin of it is taken.
   if (!solution) solution = solveExactly(program);
   if (!solution) return std::nullopt;
   const auto& q = *solution;

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -27,12 +28,17 @@ double distance(const Vec3& a, const Vec3& b) {
 // is homotopy equivalent to the solid. (L < 2r would do for exact balls; L < r
 // leaves half the ball for balls that poke out by the sampling's error.)
 // A loop around a real tunnel of the solid has every ball on it outside the
-// tunnel, so its rim is longer than twice any of its radii.
+// tunnel, so its rim is longer than twice any of its radii. Where walls are
+// thinner than the sampling resolves, one Voronoi ball may reach through the
+// wall, so r is the rim's median radius, not its largest: half the balls on
+// a rim would have to be that wrong (on the cusp box below, 39 of the 40
+// holes the largest radius closes).
 // Only rims that are simple cycles of border edges (every vertex on exactly
 // two) are closed, by one polygon through the rim's vertices in order: it
 // adds no vertex and no edge (medialness, coverage and attachment stay as
-// they are). A rim that is the mouth of a closed pocket is left open:
-// closing it would make a void (β2) of the loop.
+// they are). A rim that is the mouth of a closed pocket is left open: it
+// bounds a disk in the complex already, so closing it removes no loop and
+// encloses a void (β2).
 std::size_t fillShortHoles(MedialComplex& mc, ComplexEdges& edges) {
   const std::size_t nv = mc.vertices.size(), ne = edges.vertices.size();
   // Border edges per vertex (CSR).
@@ -54,6 +60,7 @@ std::size_t fillShortHoles(MedialComplex& mc, ComplexEdges& edges) {
 
   std::vector<std::uint8_t> visited(ne, 0);
   std::vector<Index> rim, rimEdges;
+  std::vector<double> radii;
   std::size_t filled = 0;
   for (std::size_t start = 0; start < ne; ++start) {
     if (edges.polygonCount[start] != 1 || visited[start]) continue;
@@ -62,14 +69,13 @@ std::size_t fillShortHoles(MedialComplex& mc, ComplexEdges& edges) {
     rim.clear();
     rimEdges.clear();
     bool simple = true;
-    double length = 0, largestBall = 0;
+    double length = 0;
     Index e = static_cast<Index>(start), v = edges.vertices[start][0];
     while (!visited[e]) {
       visited[e] = 1;
       if (degree(v) != 2) simple = false;
       rim.push_back(v);
       rimEdges.push_back(e);
-      largestBall = std::max(largestBall, mc.radius[v]);
       const Index w = edges.vertices[e][0] == v ? edges.vertices[e][1] : edges.vertices[e][0];
       length += distance(mc.vertices[v], mc.vertices[w]);
       if (degree(w) != 2) {
@@ -80,7 +86,11 @@ std::size_t fillShortHoles(MedialComplex& mc, ComplexEdges& edges) {
       e = at[0] == e ? at[1] : at[0];
       v = w;
     }
-    if (!simple || v != edges.vertices[start][0] || rim.size() < 3 || !(length < largestBall)) continue;
+    if (!simple || v != edges.vertices[start][0] || rim.size() < 3) continue;
+    radii.clear();
+    for (Index u : rim) radii.push_back(mc.radius[u]);
+    std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
+    if (!(length < radii[radii.size() / 2])) continue;
     // The fill adds no edge: its rim edges go from border to manifold, and
     // slot k of the new polygon is rimEdges[k] (from rim[k] to the next).
     const Index fill = static_cast<Index>(mc.polygonCount());
@@ -98,22 +108,26 @@ std::size_t fillShortHoles(MedialComplex& mc, ComplexEdges& edges) {
     ++filled;
   }
   if (filled == 0) return 0;
-  // A rim that is the only mouth of a pocket bounds it already: closing it
-  // trades the loop for a void (NIST CTC-01 had one). Such a fill is not
-  // collapsed away from the rest; it is taken out again.
+  // A fill left in the 2-core after free-face collapses closes a pocket
+  // (NIST CTC-01 had one: β2 0 -> 1). Fills are taken out of the core one at
+  // a time, newest first, and the collapses go on after each: of a tube's
+  // two short mouths only the second goes, and the first, now collapsible,
+  // stays (closing one end of a tube kills its loop, both make a void).
   const std::size_t firstFill = mc.polygonCount() - filled;
-  const std::vector<std::uint8_t> core = collapsedCore(mc, edges);
+  FreeFaceCollapse collapse(mc, edges);
   std::vector<std::uint8_t> keep(mc.polygonCount(), 1);
-  for (std::size_t p = firstFill; p < mc.polygonCount(); ++p)
-    if (core[p]) {
+  for (std::size_t p = mc.polygonCount(); p-- > firstFill;)
+    if (collapse.inCore(static_cast<Index>(p))) {
+      collapse.removeFromCore(static_cast<Index>(p));
       keep[p] = 0;
       --filled;
     }
   if (filled < mc.polygonCount() - firstFill) {
-    keepPolygons(mc, keep);
+    keepPolygons(mc, keep);  // drops no vertex: the fills added none
     edges = buildComplexEdges(mc);
   }
-  mc.sheet.clear();
+  mc.sheet.assign(mc.polygonCount(), kNoIndex);
+  mc.sheetCount = 0;
   return filled;
 }
 

@@ -144,17 +144,19 @@ std::size_t dropForcedOnlyIslands(MedialComplex& mc, std::size_t* polygonsRemove
   return removeComponents(mc, comps, drop, polygonsRemoved);
 }
 
-// Why: an island whose every ball nests in a ball of the main axis adds
-// nothing to the union of balls, the shape the axis stands for, and a
-// connected solid has a connected axis, so it is no piece of axis that the
-// sampling cut off (those have balls of their own) but a facet the filter
-// kept where it dropped its neighbours: box_fillet_variable's one triangle
-// at a fillet corner (r up to 3.3, h 1.95; its balls stick out of the main
-// axis's by 0.004, 0.003 and 0.21), a 3-vertex facet of NIST CTC-01 (r
-// 19.5, h 9.9, out by <= 0.05). Nesting is the fringe thinning's dominance,
-// with its slack: r_u - r_v + slack >= cosBeta |u - v| for some vertex u of
-// the component with the most polygons. Islands with a forced triangle stay
-// (they hold a convex edge's or corner's attachment).
+// Why: an island whose every ball (nearly) nests in a ball of the main axis
+// adds (almost) nothing to the union of balls, the shape the axis stands
+// for, and a connected solid has a connected axis, so it is no piece of
+// axis that the sampling cut off (those have balls of their own) but a
+// facet the filter kept where it dropped its neighbours: box_fillet_variable's
+// one triangle at a fillet corner (r up to 3.3, h 1.95; its balls stick out
+// of the nearest main ball by 0.004, 0.003 and 0.21), a 3-vertex facet of
+// NIST CTC-01 (r 19.5, h 9.9, out by <= 0.05); coverage stayed 100 % on
+// both. "Nearly" is the fringe thinning's dominance, with its slack:
+// r_u - r_v + slack >= cosBeta |u - v| for some vertex u of the component
+// with the most polygons, which lets v's ball reach out of u's by up to
+// (1 - cosBeta) |u - v| + slack. Islands with a forced triangle stay (they
+// hold a convex edge's or corner's attachment).
 std::size_t dropNestedIslands(MedialComplex& mc, double cosBeta, double slack, std::size_t* polygonsRemoved) {
   if (polygonsRemoved) *polygonsRemoved = 0;
   const std::size_t nv = mc.vertices.size();

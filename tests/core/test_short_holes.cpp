@@ -80,17 +80,60 @@ TEST(ShortHoles, ARimLongerThanEveryBallOnItIsATunnelAndStaysOpen) {
   MedialComplex mc = gridSheet(4, 3.0, {{1, 2}});
   EXPECT_EQ(fillOn(mc), 0u);
   EXPECT_EQ(loopsOf(mc), 1);
-  // One large ball on the rim is enough (the fan from it lies inside it).
+  // One large ball on the rim is not enough (it may reach through a wall
+  // thinner than the sampling resolves); half the rim's are.
   mc.radius[1 * 5 + 2] = 4.5;
+  EXPECT_EQ(fillOn(mc), 0u);
+  mc.radius[2 * 5 + 3] = 4.5;
   EXPECT_EQ(fillOn(mc), 1u);
   EXPECT_EQ(loopsOf(mc), 0);
 }
 
-TEST(ShortHoles, TwoHolesMeetingAtAVertexAreNotOneRim) {
+TEST(ShortHoles, SeveralHolesAreClosedAndTheEdgeTableFollows) {
+  MedialComplex mc = gridSheet(5, 5.0, {{1, 1}, {3, 3}, {1, 3}});
+  ASSERT_EQ(loopsOf(mc), 3);
+  ComplexEdges edges = buildComplexEdges(mc);
+  EXPECT_EQ(fillShortHoles(mc, edges), 3u);
+  expectEdgesCurrent(mc, edges);
+  EXPECT_EQ(loopsOf(mc), 0);
+}
+
+TEST(ShortHoles, OfATubesTwoShortMouthsOneIsClosed) {
+  // A square tube of unit side and length: one loop. Closing one mouth
+  // kills it; closing both would enclose a void.
+  MedialComplex mc;
+  for (int k = 0; k < 8; ++k) {
+    const int i = k % 4;
+    mc.vertices.push_back({double(i == 1 || i == 2), double(i >= 2), double(k / 4)});
+    mc.radius.push_back(5);
+    mc.vertexCell.push_back(Index(k));
+    mc.vertexSample.push_back(kNoIndex);
+  }
+  for (Index i = 0; i < 4; ++i) {
+    for (Index v : {i, (i + 1) % 4, (i + 1) % 4 + 4, i + 4}) mc.polygonVertices.push_back(v);
+    mc.polygonOffsets.push_back(Index(mc.polygonVertices.size()));
+    mc.provenance.push_back(PolygonProvenance::DelaunayEdgeFacet);
+    mc.provenanceSamples.push_back({0, 1});
+  }
+  ASSERT_EQ(loopsOf(mc), 1);
+  ComplexEdges edges = buildComplexEdges(mc);
+  EXPECT_EQ(fillShortHoles(mc, edges), 1u);
+  expectEdgesCurrent(mc, edges);
+  const ComplexTopology t = computeTopology(mc, edges, 1000);
+  EXPECT_EQ(t.beta1, 0);
+  EXPECT_EQ(t.beta2, 0);
+  EXPECT_EQ(mc.polygonCount(), 5u);
+  EXPECT_EQ(mc.provenance[4], PolygonProvenance::HoleFill);
+}
+
+TEST(ShortHoles, RimsThroughAPinchVertexAreLeftOpen) {
   // Squares (1,1) and (2,2) share the vertex (2,2): four border edges there,
-  // no simple cycle, nothing closed.
-  MedialComplex mc = gridSheet(4, 5.0, {{1, 1}, {2, 2}});
+  // so neither rim is a simple cycle of border edges, and neither is closed
+  // even under balls large enough for both (8 < 10).
+  MedialComplex mc = gridSheet(4, 10.0, {{1, 1}, {2, 2}});
+  ASSERT_EQ(loopsOf(mc), 2);
   EXPECT_EQ(fillOn(mc), 0u);
+  EXPECT_EQ(loopsOf(mc), 2);
 }
 
 TEST(ShortHoles, TheMouthOfAPocketStaysOpen) {

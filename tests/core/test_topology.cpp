@@ -236,6 +236,26 @@ TEST(Topology, IslandsWhoseBallsNestInTheMainAxisAreDropped) {
   forced.provenance[2] = PolygonProvenance::ConvexEdgeTriangle;
   EXPECT_EQ(dropNestedIslands(forced, cos20, slack, nullptr), 0u);
 
+  // A long main axis (40 vertices, several leaves of the tree): the one
+  // ball that holds the island's is far from the tree's first leaves.
+  std::vector<std::vector<Index>> fan;
+  for (Index i = 1; i + 1 < 40; ++i) fan.push_back({0, i, Index(i + 1)});
+  fan.push_back({40, 41, 42});
+  MedialComplex longAxis = complexOf(43, fan);
+  for (Index v = 0; v < 40; ++v) longAxis.radius[v] = 0.2;
+  longAxis.radius[35] = 3;
+  longAxis.vertices[40] = {35, 0.5, 0};
+  longAxis.vertices[41] = {35.5, 0.2, 0};
+  longAxis.vertices[42] = {35, -0.5, 0};
+  EXPECT_EQ(dropNestedIslands(longAxis, cos20, slack, nullptr), 1u);
+  EXPECT_EQ(longAxis.polygonCount(), 38u);
+  longAxis = complexOf(43, fan);  // the same without the big ball: kept
+  for (Index v = 0; v < 40; ++v) longAxis.radius[v] = 0.2;
+  longAxis.vertices[40] = {35, 0.5, 0};
+  longAxis.vertices[41] = {35.5, 0.2, 0};
+  longAxis.vertices[42] = {35, -0.5, 0};
+  EXPECT_EQ(dropNestedIslands(longAxis, cos20, slack, nullptr), 0u);
+
   // The component with the most polygons is the main axis even when its
   // balls nest in the island's.
   MedialComplex small = twoComponents();

@@ -43,7 +43,7 @@ struct MedialParams {
   // whose every vertex and edge is already on it (facet_holes.cpp).
   bool fillSingleFacetHoles = true;
   // Close holes in the sheets whose rim (a simple cycle of border edges) is
-  // shorter than the largest medial radius on it: no loop of the true axis
+  // shorter than the median medial radius on it: no loop of the true axis
   // fits in a medial ball (short_holes.cpp).
   bool fillShortHoles = true;
   // Collapse the fringe of Voronoi facets the Angle condition keeps around
@@ -77,9 +77,9 @@ struct MedialParams {
   // dropped, never the largest one.
   bool dropForcedOnlyIslands = true;
   // Drop components (not the largest, no forced triangle) whose balls all
-  // nest in the main axis's, by the fringe's dominance rule (fringeBetaDeg,
-  // fringeSlackFraction h): they add nothing to the union of balls
-  // (small_islands.cpp).
+  // nearly nest in the main axis's, by the fringe's dominance rule
+  // (fringeBetaDeg, fringeSlackFraction h): they add next to nothing to the
+  // union of balls (small_islands.cpp).
   bool dropNestedIslands = true;
   // Compute β2 (and so β1) exactly only while the 2-core left after free-face
   // collapses has at most this many polygons; otherwise β1 = β2 = -1.

@@ -23,7 +23,8 @@ struct MedialComplex {
   std::vector<Index> polygonOffsets{0};
   std::vector<Index> polygonVertices;
   std::vector<PolygonProvenance> provenance;
-  // DelaunayEdgeFacet: (p, q); ConvexEdgeTriangle: (s, -); fill: (s, s'); corner: (p, -).
+  // DelaunayEdgeFacet: (p, q); ConvexEdgeTriangle: (s, -); fill: (s, s'); corner: (p, -);
+  // HoleFill: (-, -).
   std::vector<std::array<Index, 2>> provenanceSamples;
   // Sheet id per polygon (0 .. sheetCount-1), filled by segmentSheets().
   std::vector<Index> sheet;
@@ -89,8 +90,8 @@ std::size_t dropForcedOnlyIslands(MedialComplex& complex, std::size_t* polygonsR
 
 // Removes every connected component, except the one with the most polygons,
 // that has no forced triangle and whose every vertex v is dominated by a
-// vertex u of that one: r_u - r_v + slack >= cosBeta |u - v| (its balls nest
-// in the main axis's, see small_islands.cpp), and the vertices no polygon
+// vertex u of that one: r_u - r_v + slack >= cosBeta |u - v| (its balls
+// nearly nest in the main axis's, see small_islands.cpp), and the vertices no polygon
 // uses any more. Returns the number of components removed; *polygonsRemoved
 // their polygons.
 std::size_t dropNestedIslands(MedialComplex& complex, double cosBeta, double slack, std::size_t* polygonsRemoved);
@@ -130,12 +131,13 @@ std::size_t thinFringe(MedialComplex& complex, const SampleSet& samples, const F
 ComplexEdges buildComplexEdges(const MedialComplex& complex);
 
 // Closes every hole of the complex whose rim is a simple cycle of border
-// edges shorter than the largest medial radius on it, with one HoleFill
+// edges shorter than the median medial radius on it, with one HoleFill
 // polygon through the rim's vertices (short_holes.cpp: such a loop bounds a
 // disk inside a medial ball, so it is no loop of the true axis), unless it
-// would close a pocket (the fill is left in the 2-core: β2 would grow
-// instead of β1 shrink). `edges` is buildComplexEdges(complex) and is kept
-// up to date. Returns the number of holes closed; sheets are reset.
+// closes a pocket (the fill stays in the 2-core: the rim bounded a disk
+// already, and a void would be made). `edges` is buildComplexEdges(complex)
+// and is kept up to date. Returns the number of holes closed; sheets are
+// reset (sheet ids kNoIndex, sheetCount 0).
 std::size_t fillShortHoles(MedialComplex& complex, ComplexEdges& edges);
 
 // Sheets = maximal sets of polygons connected across edges shared by exactly
@@ -151,5 +153,25 @@ ComplexTopology computeTopology(const MedialComplex& complex, const ComplexEdges
 // Per polygon, 1 if it is left after the elementary collapses above (the
 // 2-core: polygons on closed pockets, and what hangs between them).
 std::vector<std::uint8_t> collapsedCore(const MedialComplex& complex, const ComplexEdges& edges);
+
+// The same collapses, kept so that a polygon of the core can be taken out
+// and the collapses go on from the edges it frees (fillShortHoles takes its
+// fills out of the core one at a time). The complex and the edges must
+// outlive it and stay unchanged.
+class FreeFaceCollapse {
+ public:
+  FreeFaceCollapse(const MedialComplex& complex, const ComplexEdges& edges);
+  bool inCore(Index polygon) const { return alive_[polygon] != 0; }
+  const std::vector<std::uint8_t>& core() const { return alive_; }
+  void removeFromCore(Index polygon);
+
+ private:
+  void takeOut(Index polygon);
+  void collapse();
+  const MedialComplex& mc_;
+  const ComplexEdges& edges_;
+  std::vector<Index> offsets_, incident_, count_, queue_;
+  std::vector<std::uint8_t> alive_;
+};
 
 }  // namespace cadmedial
