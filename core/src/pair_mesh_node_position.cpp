@@ -5,7 +5,7 @@
 // sides) is the Chebyshev centre of the polytope where all elements are
 // positive, a small linear program. It is solved in doubles (small_lp.cpp;
 // the answer is only a candidate, which the repair checks with exact
-// predicates) and exactly by CGAL when the double solver gives up. The
+// predicates) and exactly by CGAL when the double solver is not sure. The
 // node then moves from where it is toward that centre only as far as it
 // must for every element to be clearly positive, so it stays near its
 // Voronoi vertex.
@@ -118,22 +118,14 @@ std::optional<Vec3> nearestValidNodePosition(const std::vector<Vec3>& nodes, Ind
   }
   if (program.b.empty()) return std::nullopt;
   auto solution = solveInDoubles(program);
-  // A clearly negative margin (rows normalized, |q_j| <= 1: rounding is
-  // orders of magnitude below 1e-7) means no position helps: the exact
-  // solver (0.2 ms each) would only say so again (the lever's repair asked
-  // it 599 times, box 64, CTC-01 139, and it never found a positive margin).
-  // A margin in [-1e-7, 1e-9] is no help either: the exact solver found
-  // positive ones in a third of those cases (l_bracket 24 of 74), all of
-  // 1e-18 to 3e-13, a position where the elements are flat to 1e-13 of their
-  // size; the repair's other candidates and its cluster collapse settle
-  // them. Asking it only when the doubles fail halved the repair on the
-  // box-like parts (box 19 -> 7.5 ms, l_bracket 18 -> 7.3 ms) with the same
-  // inverted counts, samplings and volumes on the bundled, public and 47
-  // robustness parts.
-  if (solution && !((*solution)[3] > 1e-9)) return std::nullopt;
-  // When the doubles give up (rare) the exact answer is all there is, and
-  // any positive margin of it is taken.
-  if (!solution) solution = solveExactly(program);
+  // A margin near zero in doubles may be rounding: the exact solver has the
+  // last word there. A clearly negative one (rows normalized, |q_j| <= 1:
+  // rounding is orders of magnitude below 1e-7) means no position helps,
+  // and the exact solver (0.2 ms each) would only say so again: the lever's
+  // repair asked it 599 times (box 64, CTC-01 139), and it never found a
+  // positive margin.
+  const bool nearZero = solution && (*solution)[3] >= -1e-7 && !((*solution)[3] > 1e-9);
+  if (!solution || nearZero) solution = solveExactly(program);
   if (!solution) return std::nullopt;
   const auto& q = *solution;
   const double margin = q[3];
