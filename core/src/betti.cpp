@@ -83,10 +83,6 @@ void FreeFaceCollapse::collapse() {
   }
 }
 
-std::vector<std::uint8_t> collapsedCore(const MedialComplex& mc, const ComplexEdges& edges) {
-  return FreeFaceCollapse(mc, edges).core();
-}
-
 ComplexTopology computeTopology(const MedialComplex& mc, const ComplexEdges& edges, std::size_t coreLimit) {
   ComplexTopology t;
   const std::size_t nv = mc.vertices.size();
@@ -104,7 +100,8 @@ ComplexTopology computeTopology(const MedialComplex& mc, const ComplexEdges& edg
     if (uf.unite(e[0], e[1])) --components;
   t.beta0 = components;
 
-  const std::vector<std::uint8_t> alive = collapsedCore(mc, edges);
+  const FreeFaceCollapse collapse(mc, edges);
+  const std::vector<std::uint8_t>& alive = collapse.core();
   std::vector<std::vector<Index>> core;
   for (std::size_t p = 0; p < nf; ++p) {
     if (!alive[p]) continue;

@@ -44,8 +44,9 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
     throw std::invalid_argument("computeCadMedial: triangulation and SampleSet differ in size");
   if (!(params.thetaDeg > 0 && params.thetaDeg < 90)) throw std::invalid_argument("MedialParams: theta must be in (0°, 90°)");
   if (!(params.rho > 0)) throw std::invalid_argument("MedialParams: rho must be positive");
-  if ((params.thinFringe || params.dropNestedIslands) && !(params.fringeBetaDeg > 0 && params.fringeBetaDeg < 90 && params.fringeSlackFraction >= 0 &&
-                             params.fringeMinReachFraction > 0))
+  if ((params.thinFringe || params.dropNestedIslands) &&
+      !(params.fringeBetaDeg > 0 && params.fringeBetaDeg < 90 && params.fringeSlackFraction >= 0 &&
+        params.fringeMinReachFraction > 0))
     throw std::invalid_argument("MedialParams: fringe beta must be in (0°, 90°), slack >= 0, min reach > 0");
 
   MedialResult r;
@@ -95,9 +96,11 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
   static_cast<MedialComplex&>(r) = buildInnerComplex(dv, samples, selected, r.forced, r.labels);
   if (params.fillSingleFacetHoles) r.counts.singleFacetHolesFilled = fillSingleFacetHoles(dv, selected, r);
   const double spacing = samples.spacing > 0 ? samples.spacing : samples.bboxDiagonal() / 40;
+  // The fringe's dominance (v's ball nearly inside u's), also read by the nested-island rule.
+  const double fringeCosBeta = std::cos(params.fringeBetaDeg * 3.14159265358979323846 / 180.0);
   if (params.thinFringe && spacing > 0 && r.polygonCount() > 0) {  // no scale on flat or empty input
     FringeThinningParams fringe;
-    fringe.cosBeta = std::cos(params.fringeBetaDeg * 3.14159265358979323846 / 180.0);
+    fringe.cosBeta = fringeCosBeta;
     fringe.minReach = params.fringeMinReachFraction * spacing;
     fringe.slack = params.fringeSlackFraction * spacing;
     r.counts.fringePolygonsThinned = thinFringe(r, samples, fringe);
@@ -110,8 +113,7 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
         dropSubResolutionIslands(r, params.islandRadiusFraction * spacing, &r.counts.subResolutionIslandPolygons);
   }
   if (params.dropNestedIslands && spacing > 0) {
-    r.counts.nestedIslands = dropNestedIslands(r, std::cos(params.fringeBetaDeg * 3.14159265358979323846 / 180.0),
-                                               params.fringeSlackFraction * spacing, nullptr);
+    r.counts.nestedIslands = dropNestedIslands(r, fringeCosBeta, params.fringeSlackFraction * spacing, nullptr);
   }
   // After the rules above, which read one vertex per cell. Voronoi vertices
   // this close are one (cospherical samples).

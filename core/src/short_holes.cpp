@@ -1,18 +1,10 @@
 #include <algorithm>
-#include <cmath>
 #include <vector>
 
 #include "cadmedial/polygon_complex.hpp"
+#include "cadmedial/vec3_ops.hpp"
 
 namespace cadmedial {
-
-namespace {
-
-double distance(const Vec3& a, const Vec3& b) {
-  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-}
-
-}  // namespace
 
 // Why: where a wall is thinner than the sampling resolves (the sliver at a
 // zero-angle cusp, a neck below the finest spacing), the filter and the walk
@@ -77,7 +69,7 @@ std::size_t fillShortHoles(MedialComplex& mc, ComplexEdges& edges) {
       rim.push_back(v);
       rimEdges.push_back(e);
       const Index w = edges.vertices[e][0] == v ? edges.vertices[e][1] : edges.vertices[e][0];
-      length += distance(mc.vertices[v], mc.vertices[w]);
+      length += vec3::norm(vec3::sub(mc.vertices[v], mc.vertices[w]));
       if (degree(w) != 2) {
         simple = false;
         break;

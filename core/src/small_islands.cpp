@@ -168,7 +168,10 @@ std::size_t dropNestedIslands(MedialComplex& mc, double cosBeta, double slack, s
   bool anyCandidate = false;
   for (std::size_t v = 0; v < nv; ++v) {
     const Index root = comps.root[v];
-    if (root != comps.keepRoot && !attached[root]) drop[root] = 1, anyCandidate = true;
+    if (root != comps.keepRoot && !attached[root]) {
+      drop[root] = 1;
+      anyCandidate = true;
+    }
   }
   if (!anyCandidate) return 0;  // no tree over the main axis (1.3 M vertices on the bottle)
   // r_u - r_v + slack >= cosBeta |u - v|  <=>  |u - v| - r_u / cosBeta <= (slack - r_v) / cosBeta.

@@ -1,6 +1,8 @@
 // fillShortHoles on hand-built sheets: a hole whose rim is shorter than a
 // medial ball on it is closed; a long rim (a real tunnel), a rim through a
 // pinch vertex and the mouth of a pocket are left open.
+#include <algorithm>
+#include <array>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -11,27 +13,46 @@ using namespace cadmedial;
 
 namespace {
 
-// An n x n grid of unit squares in the plane z = 0, every vertex with medial
-// radius `radius`, without the squares (i, j) listed in `missing`.
-MedialComplex gridSheet(int n, double radius, const std::set<std::pair<int, int>>& missing) {
+// A complex of Voronoi-facet polygons over the given points, every vertex
+// with medial radius `radius`.
+MedialComplex sheetOf(const std::vector<Vec3>& points, double radius, const std::vector<std::vector<Index>>& polygons) {
   MedialComplex mc;
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    mc.vertices.push_back(points[v]);
+    mc.radius.push_back(radius);
+    mc.vertexCell.push_back(Index(v));
+    mc.vertexSample.push_back(kNoIndex);
+  }
+  for (const auto& p : polygons) {
+    mc.polygonVertices.insert(mc.polygonVertices.end(), p.begin(), p.end());
+    mc.polygonOffsets.push_back(Index(mc.polygonVertices.size()));
+    mc.provenance.push_back(PolygonProvenance::DelaunayEdgeFacet);
+    mc.provenanceSamples.push_back({0, 1});
+  }
+  return mc;
+}
+
+// The points and squares of an n x n grid of unit squares in the plane
+// z = 0 (vertex (i, j) is i (n + 1) + j), without the squares (i, j) listed
+// in `missing`.
+struct Grid {
+  std::vector<Vec3> points;
+  std::vector<std::vector<Index>> squares;
+};
+Grid grid(int n, const std::set<std::pair<int, int>>& missing) {
+  Grid g;
   auto id = [n](int i, int j) { return Index(i * (n + 1) + j); };
   for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= n; ++j) {
-      mc.vertices.push_back({double(i), double(j), 0});
-      mc.radius.push_back(radius);
-      mc.vertexCell.push_back(id(i, j));
-      mc.vertexSample.push_back(kNoIndex);
-    }
+    for (int j = 0; j <= n; ++j) g.points.push_back({double(i), double(j), 0});
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      if (missing.count({i, j})) continue;
-      for (Index v : {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)}) mc.polygonVertices.push_back(v);
-      mc.polygonOffsets.push_back(Index(mc.polygonVertices.size()));
-      mc.provenance.push_back(PolygonProvenance::DelaunayEdgeFacet);
-      mc.provenanceSamples.push_back({0, 1});
-    }
-  return mc;
+    for (int j = 0; j < n; ++j)
+      if (!missing.count({i, j})) g.squares.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  return g;
+}
+
+MedialComplex gridSheet(int n, double radius, const std::set<std::pair<int, int>>& missing) {
+  const Grid g = grid(n, missing);
+  return sheetOf(g.points, radius, g.squares);
 }
 
 std::size_t fillOn(MedialComplex& mc) {
@@ -101,20 +122,11 @@ TEST(ShortHoles, SeveralHolesAreClosedAndTheEdgeTableFollows) {
 TEST(ShortHoles, OfATubesTwoShortMouthsOneIsClosed) {
   // A square tube of unit side and length: one loop. Closing one mouth
   // kills it; closing both would enclose a void.
-  MedialComplex mc;
-  for (int k = 0; k < 8; ++k) {
-    const int i = k % 4;
-    mc.vertices.push_back({double(i == 1 || i == 2), double(i >= 2), double(k / 4)});
-    mc.radius.push_back(5);
-    mc.vertexCell.push_back(Index(k));
-    mc.vertexSample.push_back(kNoIndex);
-  }
-  for (Index i = 0; i < 4; ++i) {
-    for (Index v : {i, (i + 1) % 4, (i + 1) % 4 + 4, i + 4}) mc.polygonVertices.push_back(v);
-    mc.polygonOffsets.push_back(Index(mc.polygonVertices.size()));
-    mc.provenance.push_back(PolygonProvenance::DelaunayEdgeFacet);
-    mc.provenanceSamples.push_back({0, 1});
-  }
+  std::vector<Vec3> corners;
+  for (int k = 0; k < 8; ++k) corners.push_back({double(k % 4 == 1 || k % 4 == 2), double(k % 4 >= 2), double(k / 4)});
+  std::vector<std::vector<Index>> sides;
+  for (Index i = 0; i < 4; ++i) sides.push_back({i, (i + 1) % 4, (i + 1) % 4 + 4, i + 4});
+  MedialComplex mc = sheetOf(corners, 5, sides);
   ASSERT_EQ(loopsOf(mc), 1);
   ComplexEdges edges = buildComplexEdges(mc);
   EXPECT_EQ(fillShortHoles(mc, edges), 1u);
@@ -127,10 +139,31 @@ TEST(ShortHoles, OfATubesTwoShortMouthsOneIsClosed) {
 }
 
 TEST(ShortHoles, RimsThroughAPinchVertexAreLeftOpen) {
-  // Squares (1,1) and (2,2) share the vertex (2,2): four border edges there,
-  // so neither rim is a simple cycle of border edges, and neither is closed
-  // even under balls large enough for both (8 < 10).
-  MedialComplex mc = gridSheet(4, 10.0, {{1, 1}, {2, 2}});
+  // Squares (1,1) and (2,2) of a 4 x 4 grid share the vertex P = (2,2):
+  // four border edges there, so neither rim is a simple cycle of border
+  // edges, and neither is closed even under balls large enough for both
+  // (8 < 10). The walk is made to start at P, along the first hole's edge
+  // P-(2,1) (P is vertex 0 and that edge the first polygon's first side):
+  // from there, a walk that went on through P would come back to P round
+  // the first hole alone and close it.
+  Grid g = grid(4, {{1, 1}, {2, 2}});
+  const Index pinch = 2 * 5 + 2, below = 2 * 5 + 1;
+  std::swap(g.points[0], g.points[pinch]);
+  for (auto& square : g.squares)
+    for (Index& v : square) v = v == pinch ? 0 : v == 0 ? pinch : v;
+  for (std::size_t q = 0; q < g.squares.size(); ++q) {
+    auto& square = g.squares[q];
+    const auto at = std::find(square.begin(), square.end(), Index(0));
+    if (at == square.end()) continue;
+    std::rotate(square.begin(), at, square.end());
+    if (square[1] != below) continue;  // square (2,1): (P, (2,1), (3,1), (3,2))
+    std::swap(g.squares[0], g.squares[q]);
+    break;
+  }
+  MedialComplex mc = sheetOf(g.points, 10.0, g.squares);
+  const ComplexEdges edges = buildComplexEdges(mc);
+  ASSERT_EQ(edges.vertices[0], (std::array<Index, 2>{0, below}));
+  ASSERT_EQ(edges.polygonCount[0], 1u);
   ASSERT_EQ(loopsOf(mc), 2);
   EXPECT_EQ(fillOn(mc), 0u);
   EXPECT_EQ(loopsOf(mc), 2);
@@ -139,20 +172,9 @@ TEST(ShortHoles, RimsThroughAPinchVertexAreLeftOpen) {
 TEST(ShortHoles, TheMouthOfAPocketStaysOpen) {
   // A unit cube's surface without its top: closing the mouth would enclose a
   // void (β2 = 1) instead of removing a loop.
-  MedialComplex mc;
-  for (int k = 0; k < 8; ++k) {
-    mc.vertices.push_back({double(k & 1), double((k >> 1) & 1), double((k >> 2) & 1)});
-    mc.radius.push_back(5);
-    mc.vertexCell.push_back(Index(k));
-    mc.vertexSample.push_back(kNoIndex);
-  }
-  const std::vector<std::vector<Index>> walls = {{0, 1, 3, 2}, {0, 1, 5, 4}, {1, 3, 7, 5}, {3, 2, 6, 7}, {2, 0, 4, 6}};
-  for (const auto& q : walls) {
-    mc.polygonVertices.insert(mc.polygonVertices.end(), q.begin(), q.end());
-    mc.polygonOffsets.push_back(Index(mc.polygonVertices.size()));
-    mc.provenance.push_back(PolygonProvenance::DelaunayEdgeFacet);
-    mc.provenanceSamples.push_back({0, 1});
-  }
+  std::vector<Vec3> corners;
+  for (int k = 0; k < 8; ++k) corners.push_back({double(k & 1), double((k >> 1) & 1), double((k >> 2) & 1)});
+  MedialComplex mc = sheetOf(corners, 5, {{0, 1, 3, 2}, {0, 1, 5, 4}, {1, 3, 7, 5}, {3, 2, 6, 7}, {2, 0, 4, 6}});
   const std::size_t before = mc.polygonCount();
   ComplexEdges edges = buildComplexEdges(mc);
   EXPECT_EQ(fillShortHoles(mc, edges), 0u);  // filled, then taken out again

@@ -150,14 +150,11 @@ void segmentSheets(MedialComplex& complex, const ComplexEdges& edges);
 // coreLimit polygons). β1 from the Euler characteristic: β1 = β0 + β2 − χ.
 ComplexTopology computeTopology(const MedialComplex& complex, const ComplexEdges& edges, std::size_t coreLimit);
 
-// Per polygon, 1 if it is left after the elementary collapses above (the
-// 2-core: polygons on closed pockets, and what hangs between them).
-std::vector<std::uint8_t> collapsedCore(const MedialComplex& complex, const ComplexEdges& edges);
-
-// The same collapses, kept so that a polygon of the core can be taken out
-// and the collapses go on from the edges it frees (fillShortHoles takes its
-// fills out of the core one at a time). The complex and the edges must
-// outlive it and stay unchanged.
+// The elementary collapses above. core() is, per polygon, 1 if it is left
+// (the 2-core: polygons on closed pockets, and what hangs between them). A
+// polygon of the core can be taken out and the collapses go on from the
+// edges it frees (fillShortHoles takes its fills out one at a time). The
+// complex and the edges must outlive it and stay unchanged.
 class FreeFaceCollapse {
  public:
   FreeFaceCollapse(const MedialComplex& complex, const ComplexEdges& edges);
