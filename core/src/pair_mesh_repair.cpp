@@ -297,9 +297,13 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
       for (double s : kSteps)
         targets.push_back({(1 - s) * start[0] + s * centroid[0], (1 - s) * start[1] + s * centroid[1],
                            (1 - s) * start[2] + s * centroid[2]});
+      // Each neighbour once (it is in several of the node's elements; a
+      // repeated target could never win, as only a strictly better one does).
+      std::vector<Index> neighbours;
       incidence.forEach(m, v, [&](Index i) {
         for (Index u : m.tets[i])
-          if (u != v && !m.isBoundaryNode(u)) {
+          if (u != v && !m.isBoundaryNode(u) && std::find(neighbours.begin(), neighbours.end(), u) == neighbours.end()) {
+            neighbours.push_back(u);
             const Vec3& q = m.nodes[u];
             targets.push_back(q);
             targets.push_back({(start[0] + q[0]) / 2, (start[1] + q[1]) / 2, (start[2] + q[2]) / 2});

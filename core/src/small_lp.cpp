@@ -79,7 +79,8 @@ struct Dictionary {
 }  // namespace
 
 std::optional<std::vector<double>> maximizeSmallLp(const std::vector<double>& A, const std::vector<double>& b,
-                                                   const std::vector<double>& c) {
+                                                   const std::vector<double>& c, std::vector<std::size_t>* tight) {
+  if (tight) tight->clear();
   const std::size_t n = c.size(), m = b.size();
   if (n == 0 || A.size() != m * n) return std::nullopt;
   for (double x : A)
@@ -145,6 +146,7 @@ std::optional<std::vector<double>> maximizeSmallLp(const std::vector<double>& A,
       for (std::size_t j = 0; j < n; ++j) d.c[j] -= w * d.at(i, j);
     }
   if (d.maximize() != Dictionary::Outcome::Optimal) return std::nullopt;
+  if (tight) *tight = d.nonbasic;
   std::vector<double> x(n, 0);
   for (std::size_t i = 0; i < m; ++i)
     if (d.basic[i] < n) x[d.basic[i]] = std::max(0.0, d.b[i]);

@@ -17,8 +17,13 @@ namespace cadmedial {
 
 // Maximizes c . x subject to A x <= b and x >= 0 (A: rows x c.size(),
 // row-major). Returns the optimal x, or nullopt when the program is
-// infeasible, unbounded, or not solved with confidence.
+// infeasible, unbounded, or not solved with confidence. When `tight` is
+// given and the solver ends on an optimal basis, it receives the c.size()
+// constraints that hold with equality there (the nonbasic variables): id
+// j < c.size() for x_j >= 0, c.size() + i for row i; a caller can check
+// that basis exactly (lp_basis_certificate.hpp).
 std::optional<std::vector<double>> maximizeSmallLp(const std::vector<double>& A, const std::vector<double>& b,
-                                                   const std::vector<double>& c);
+                                                   const std::vector<double>& c,
+                                                   std::vector<std::size_t>* tight = nullptr);
 
 }  // namespace cadmedial

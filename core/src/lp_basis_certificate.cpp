@@ -1,0 +1,271 @@
+// Exact check of one LP basis (see the header), division-free: with M the
+// basis's 4x4 matrix of normals, D = det M and A = adj M (so M^-1 = A / D),
+// the vertex is x = A r / D, the dual multipliers y = A^T c / D, and every
+// sign the check needs is the sign of a polynomial in the input doubles
+// times sign(D). Those polynomials are evaluated first in interval
+// arithmetic, which settles them unless the vertex is (nearly) degenerate,
+// then exactly in CGAL's Mpzf (the exact type of its own filtered
+// predicates: integers times powers of two, no gcd, no division).
+#include "lp_basis_certificate.hpp"
+
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Mpzf.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace cadmedial {
+
+namespace {
+
+using Interval = CGAL::Interval_nt<true>;  // sets the rounding mode per operation
+using Exact = CGAL::Mpzf;
+
+enum class Sign { Negative, Zero, Positive, Unknown };
+
+Sign signOf(const Interval& v) {
+  if (v.inf() > 0) return Sign::Positive;
+  if (v.sup() < 0) return Sign::Negative;
+  if (v.inf() == 0 && v.sup() == 0) return Sign::Zero;
+  return Sign::Unknown;
+}
+
+Sign signOf(const Exact& v) {
+  const CGAL::Sign s = v.sign();
+  return s == CGAL::POSITIVE ? Sign::Positive : s == CGAL::NEGATIVE ? Sign::Negative : Sign::Zero;
+}
+
+Sign times(Sign a, Sign b) {
+  if (a == Sign::Unknown || b == Sign::Unknown) return Sign::Unknown;
+  if (a == Sign::Zero || b == Sign::Zero) return Sign::Zero;
+  return a == b ? Sign::Positive : Sign::Negative;
+}
+
+template <class NT>
+NT det3(const NT& a, const NT& b, const NT& c, const NT& d, const NT& e, const NT& f, const NT& g, const NT& h,
+        const NT& i) {
+  return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
+}
+
+// One basis in exact form: D, the adjugate, the homogeneous vertex X = A r
+// (x = X / D) and multipliers Y = A^T c (y = Y / D).
+template <class NT>
+struct Basis {
+  NT D;
+  std::array<std::array<NT, 4>, 4> adj;  // adj[i][j] = (A)_ij
+  std::array<NT, 4> X, Y;
+  Sign signD = Sign::Unknown;
+
+  Basis(const std::vector<LinearConstraint>& constraints, const std::array<std::size_t, 4>& basis,
+        const std::array<double, 4>& objective) {
+    std::array<std::array<NT, 4>, 4> M;
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; k < 4; ++k) M[i][k] = NT(constraints[basis[i]].normal[k]);
+    // A_ij = (-1)^(i+j) times the minor of M without row j and column i.
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        NT m[9];
+        int n = 0;
+        for (int r = 0; r < 4; ++r)
+          if (r != j)
+            for (int k = 0; k < 4; ++k)
+              if (k != i) m[n++] = M[r][k];
+        const NT minor = det3(m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8]);
+        adj[i][j] = (i + j) % 2 == 0 ? minor : NT(0) - minor;
+      }
+    D = NT(0);
+    for (int k = 0; k < 4; ++k) D = D + M[0][k] * adj[k][0];
+    signD = signOf(D);
+    for (int i = 0; i < 4; ++i) {
+      X[i] = NT(0);
+      Y[i] = NT(0);
+      for (int j = 0; j < 4; ++j) {
+        X[i] = X[i] + adj[i][j] * NT(constraints[basis[j]].bound);
+        Y[i] = Y[i] + adj[j][i] * NT(objective[j]);
+      }
+    }
+  }
+
+  // a . v for a constraint's normal and a homogeneous vector.
+  static NT dot(const LinearConstraint& constraint, const std::array<NT, 4>& v) {
+    NT sum(0);
+    for (int k = 0; k < 4; ++k)
+      if (constraint.normal[k] != 0) sum = sum + NT(constraint.normal[k]) * v[k];
+    return sum;
+  }
+
+  // D times the slack bound - a . x, and its sign as a slack (times sign D).
+  NT scaledSlack(const LinearConstraint& constraint) const { return NT(constraint.bound) * D - dot(constraint, X); }
+  Sign slackSign(const LinearConstraint& constraint) const { return times(signOf(scaledSlack(constraint)), signD); }
+  Sign multiplierSign(int i) const { return times(signOf(Y[i]), signD); }
+  Sign objectiveSign(const std::array<double, 4>& objective) const {
+    NT value(0);
+    for (int k = 0; k < 4; ++k) value = value + NT(objective[k]) * X[k];
+    return times(signOf(value), signD);
+  }
+  std::array<double, 4> vertex() const {
+    const double d = CGAL::to_double(D);
+    return {CGAL::to_double(X[0]) / d, CGAL::to_double(X[1]) / d, CGAL::to_double(X[2]) / d, CGAL::to_double(X[3]) / d};
+  }
+};
+
+bool inBasis(const std::array<std::size_t, 4>& basis, std::size_t i) {
+  return std::find(basis.begin(), basis.end(), i) != basis.end();
+}
+
+int toInt(Sign s) { return s == Sign::Positive ? 1 : s == Sign::Negative ? -1 : 0; }
+
+// The basis's vertex checked with NT; nullopt when a sign is unknown (or,
+// exactly, when the basis is singular: `singular` says so).
+template <class NT>
+std::optional<CertifiedVertex> check(const std::vector<LinearConstraint>& constraints,
+                                     const std::array<std::size_t, 4>& basis, const std::array<double, 4>& objective,
+                                     bool& singular) {
+  const Basis<NT> b(constraints, basis, objective);
+  singular = b.signD == Sign::Zero;
+  if (b.signD == Sign::Unknown || singular) return std::nullopt;
+  CertifiedVertex vertex;
+  vertex.feasible = true;
+  for (std::size_t i = 0; i < constraints.size(); ++i) {
+    if (inBasis(basis, i)) continue;  // holds with equality
+    const Sign s = b.slackSign(constraints[i]);
+    if (s == Sign::Unknown) return std::nullopt;
+    if (s == Sign::Negative) vertex.feasible = false;
+  }
+  bool dualFeasible = true;
+  for (int i = 0; i < 4; ++i) {
+    const Sign s = b.multiplierSign(i);
+    if (s == Sign::Unknown) return std::nullopt;
+    if (s == Sign::Negative) dualFeasible = false;
+  }
+  const Sign value = b.objectiveSign(objective);
+  if (value == Sign::Unknown) return std::nullopt;
+  vertex.optimal = vertex.feasible && dualFeasible;
+  vertex.objectiveSign = toInt(value);
+  vertex.x = b.vertex();
+  return vertex;
+}
+
+// Exact simplex from a basis that is primal or dual feasible, in the form
+// where a basis is four tight constraints. Primal feasible: the constraint
+// whose multiplier is negative leaves (the vertex moves off its plane,
+// raising the objective) and the first constraint met on the way enters.
+// Dual feasible (the double solver's basis, a rounding away from
+// feasible): a violated constraint enters and the basis constraint whose
+// multiplier first reaches zero leaves, keeping the multipliers
+// non-negative. Bland's rule (lowest index on every choice) cannot cycle on
+// the degenerate vertices that are common here. Each basis is recomputed
+// from the input doubles, so the numbers never grow. nullopt when the basis
+// is neither, singular, or the pivots run out.
+std::optional<CertifiedVertex> exactSimplex(const std::vector<LinearConstraint>& constraints,
+                                            std::array<std::size_t, 4> basis, const std::array<double, 4>& objective,
+                                            int maxPivots) {
+  for (int pivots = 0; pivots <= maxPivots; ++pivots) {
+    const Basis<Exact> b(constraints, basis, objective);
+    if (b.signD == Sign::Zero) return std::nullopt;
+    const bool flip = b.signD == Sign::Negative;  // multiply the scaled values by sign D
+    auto normalized = [flip](Exact v) { return flip ? Exact(0) - v : v; };
+    std::size_t violated = constraints.size();
+    for (std::size_t i = 0; i < constraints.size() && violated == constraints.size(); ++i)
+      if (!inBasis(basis, i) && b.slackSign(constraints[i]) == Sign::Negative) violated = i;
+    int leaving = -1;
+    for (int i = 0; i < 4; ++i)
+      if (b.multiplierSign(i) == Sign::Negative && (leaving < 0 || basis[i] < basis[leaving])) leaving = i;
+    if (violated == constraints.size() && leaving < 0) {
+      CertifiedVertex vertex;
+      vertex.feasible = vertex.optimal = true;
+      vertex.objectiveSign = toInt(b.objectiveSign(objective));
+      vertex.x = b.vertex();
+      return vertex;
+    }
+    if (pivots == maxPivots) return std::nullopt;
+    if (violated == constraints.size()) {
+      // Primal pivot: off the leaving plane along d = -A e_leaving / D (its
+      // normal . d = -1, the other three stay tight). Per other constraint,
+      // scaled by |D|: rate = a . d, room = r - a . x; the step to it is
+      // room / rate.
+      std::array<Exact, 4> direction;
+      for (int i = 0; i < 4; ++i) direction[i] = Exact(0) - b.adj[i][leaving];
+      std::size_t entering = constraints.size();
+      Exact bestRoom, bestRate;
+      for (std::size_t i = 0; i < constraints.size(); ++i) {
+        if (inBasis(basis, i)) continue;
+        const Exact rate = normalized(Basis<Exact>::dot(constraints[i], direction));
+        if (rate.sign() != CGAL::POSITIVE) continue;
+        const Exact room = normalized(b.scaledSlack(constraints[i]));
+        // room / rate < bestRoom / bestRate (rates positive); ties keep the lower index.
+        if (entering == constraints.size() || room * bestRate < bestRoom * rate) {
+          entering = i;
+          bestRoom = room;
+          bestRate = rate;
+        }
+      }
+      if (entering == constraints.size()) return std::nullopt;  // unbounded
+      basis[leaving] = entering;
+    } else {
+      if (leaving >= 0) return std::nullopt;  // neither primal nor dual feasible
+      // Dual pivot: the violated normal in the basis's normals,
+      // a = sum_i lambda_i n_i with lambda = A^T a / D; multipliers move as
+      // y - s lambda, so the first to reach zero among lambda_i > 0 leaves.
+      std::array<Exact, 4> lambda;
+      for (int i = 0; i < 4; ++i) {
+        Exact sum(0);
+        for (int j = 0; j < 4; ++j)
+          if (constraints[violated].normal[j] != 0) sum = sum + b.adj[j][i] * Exact(constraints[violated].normal[j]);
+        lambda[i] = normalized(sum);
+      }
+      int out = -1;
+      Exact bestY, bestLambda;
+      for (int i = 0; i < 4; ++i) {
+        if (lambda[i].sign() != CGAL::POSITIVE) continue;
+        const Exact y = normalized(b.Y[i]);  // >= 0
+        if (out < 0 || y * bestLambda < bestY * lambda[i] ||
+            (y * bestLambda == bestY * lambda[i] && basis[i] < basis[out])) {
+          out = i;
+          bestY = y;
+          bestLambda = lambda[i];
+        }
+      }
+      if (out < 0) return std::nullopt;  // the program is infeasible
+      basis[out] = violated;
+    }
+  }
+  return std::nullopt;
+}
+
+bool validBasis(const std::vector<LinearConstraint>& constraints, const std::array<std::size_t, 4>& basis) {
+  for (std::size_t i = 0; i < 4; ++i) {
+    if (basis[i] >= constraints.size()) return false;
+    for (std::size_t j = 0; j < i; ++j)
+      if (basis[i] == basis[j]) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<CertifiedVertex> certifyBasis(const std::vector<LinearConstraint>& constraints,
+                                            const std::array<std::size_t, 4>& basis,
+                                            const std::array<double, 4>& objective, int maxPivots,
+                                            const std::optional<std::array<std::size_t, 4>>& feasibleStart) {
+  if (!validBasis(constraints, basis)) return std::nullopt;
+  for (const auto& constraint : constraints) {
+    if (!std::isfinite(constraint.bound)) return std::nullopt;
+    for (double a : constraint.normal)
+      if (!std::isfinite(a)) return std::nullopt;
+  }
+  for (double a : objective)
+    if (!std::isfinite(a)) return std::nullopt;
+  bool singular = false;
+  const std::optional<CertifiedVertex> quick = check<Interval>(constraints, basis, objective, singular);
+  if (singular) return std::nullopt;
+  if (quick && (quick->optimal || maxPivots <= 0)) return quick;
+  if (maxPivots > 0) {
+    if (auto optimum = exactSimplex(constraints, basis, objective, maxPivots)) return optimum;
+    if (feasibleStart && validBasis(constraints, *feasibleStart))
+      if (auto optimum = exactSimplex(constraints, *feasibleStart, objective, maxPivots)) return optimum;
+  }
+  return quick ? quick : check<Exact>(constraints, basis, objective, singular);
+}
+
+}  // namespace cadmedial
