@@ -1,5 +1,6 @@
 #include "cadmedial/polygon_complex.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include "cadmedial/unique_edges.hpp"
@@ -11,6 +12,20 @@ MedialComplex buildInnerComplex(const DelaunayVoronoi& dv, const SampleSet& samp
   MedialComplex mc;
   std::vector<Index> cellVertex(dv.cellCount(), kNoIndex);
   std::vector<Index> sampleVertex(samples.size(), kNoIndex);
+  // Upper bounds, reserved so that the arrays never grow by copies (pages
+  // reserved and never written cost nothing; on the bottle, growing them
+  // was a few per cent of the core in page faults and copies).
+  const std::size_t maxPolygons = selected.size() + forced.triangles.size();
+  const std::size_t maxVertices = std::min<std::size_t>(dv.cellCount() + samples.size(),
+                                                        selected.ringCells.size() + 3 * forced.triangles.size());
+  mc.vertices.reserve(maxVertices);
+  mc.radius.reserve(maxVertices);
+  mc.vertexCell.reserve(maxVertices);
+  mc.vertexSample.reserve(maxVertices);
+  mc.polygonOffsets.reserve(maxPolygons + 1);
+  mc.polygonVertices.reserve(selected.ringCells.size() + 3 * forced.triangles.size());
+  mc.provenance.reserve(maxPolygons);
+  mc.provenanceSamples.reserve(maxPolygons);
   auto cellV = [&](Index c) {
     if (cellVertex[c] == kNoIndex) {
       cellVertex[c] = static_cast<Index>(mc.vertices.size());
@@ -65,6 +80,15 @@ MedialComplex buildInnerComplex(const DelaunayVoronoi& dv, const SampleSet& samp
 void keepPolygons(MedialComplex& mc, const std::vector<std::uint8_t>& keep) {
   MedialComplex out;
   std::vector<Index> newIndex(mc.vertices.size(), kNoIndex);
+  // At most what there is (see buildInnerComplex).
+  out.vertices.reserve(mc.vertices.size());
+  out.radius.reserve(mc.vertices.size());
+  out.vertexCell.reserve(mc.vertices.size());
+  out.vertexSample.reserve(mc.vertices.size());
+  out.polygonOffsets.reserve(mc.polygonOffsets.size());
+  out.polygonVertices.reserve(mc.polygonVertices.size());
+  out.provenance.reserve(mc.provenance.size());
+  out.provenanceSamples.reserve(mc.provenanceSamples.size());
   for (std::size_t p = 0; p < mc.polygonCount(); ++p) {
     if (!keep[p]) continue;
     for (Index k = mc.polygonOffsets[p]; k < mc.polygonOffsets[p + 1]; ++k) {

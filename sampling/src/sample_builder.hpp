@@ -27,6 +27,7 @@ class SampleBuilder {
     exclusion_.push_back(exclusionRadius);
     maxExclusion_ = std::max(maxExclusion_, exclusionRadius);
     grid_.bucket(key(cellOf(p.X()), cellOf(p.Y()), cellOf(p.Z()))).push_back({p.X(), p.Y(), p.Z(), exclusionRadius, id});
+    if (set_.points.size() >= nextCellCheck_ || 2.67 * maxExclusion_ > 2 * cell_) fitCells();
     return id;
   }
 
@@ -58,9 +59,14 @@ class SampleBuilder {
   }
 
   double exclusion(Index i) const { return exclusion_[i]; }
+  double cellSize() const { return cell_; }
   void setExclusion(Index i, double r) {
     exclusion_[i] = r;
     maxExclusion_ = std::max(maxExclusion_, r);
+    if (2.67 * maxExclusion_ > 2 * cell_) {
+      fitCells();  // the entry's bucket is rebuilt with its new radius
+      return;
+    }
     const auto& c = set_.points[i];
     for (Entry& q : grid_.bucket(key(cellOf(c[0]), cellOf(c[1]), cellOf(c[2]))))
       if (q.id == i) q.exclusion = r;
@@ -74,10 +80,35 @@ class SampleBuilder {
            static_cast<std::uint64_t>(k & 0x1FFFFF);
   }
 
+  // isClear is exact for any cell size; the size only sets its cost. The
+  // caller's guess (twice the largest spacing asked for) can be far above
+  // the exclusion radii the samples get: on the bottle, cells of 4.7 for
+  // radii of at most 0.19 held ~340 samples per query. So each time the
+  // sample count doubles, cells more than 4x too large for the largest
+  // radius so far (a ball of it then overlaps at most 2 cells per axis at
+  // the size aimed for, 2.67x that radius) are rebuilt at that size; cells
+  // below half that size, for a radius that grew, are rebuilt at once (a query
+  // would otherwise visit (2 reach / cell + 1)^3 of them). Samples and
+  // answers are the same either way.
+  void fitCells() {
+    nextCellCheck_ = 2 * set_.points.size();
+    const double aim = 2.67 * maxExclusion_;
+    if (!(aim > 0) || (cell_ <= 4 * aim && cell_ >= 0.5 * aim)) return;
+    cell_ = aim;
+    CellTable grid;
+    // Sample ids index exclusion_ (the builder starts from an empty set).
+    for (Index id = 0; id < exclusion_.size(); ++id) {
+      const auto& c = set_.points[id];
+      grid.bucket(key(cellOf(c[0]), cellOf(c[1]), cellOf(c[2]))).push_back({c[0], c[1], c[2], exclusion_[id], id});
+    }
+    grid_ = std::move(grid);
+  }
+
   SampleSet& set_;
   double cell_;
   std::vector<double> exclusion_;
   double maxExclusion_ = 0;
+  std::size_t nextCellCheck_ = 4096;
   // A sample as the grid keeps it: position and exclusion next to the id, so a
   // query reads one contiguous bucket instead of chasing ids into the
   // SampleSet (cache misses were the cost once cells were small).
