@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "complex_builders.hpp"
 #include "medial_checks.hpp"
 #include "synthetic_samples.hpp"
 
@@ -12,21 +13,11 @@ using namespace cadmedial::testing;
 
 namespace {
 
+// Vertex i at (i, 0, 0), radius 1 (only the combinatorics matter here).
 MedialComplex complexOf(std::size_t vertices, const std::vector<std::vector<Index>>& polygons) {
-  MedialComplex mc;
-  for (std::size_t i = 0; i < vertices; ++i) {
-    mc.vertices.push_back({double(i), 0, 0});
-    mc.radius.push_back(1);
-    mc.vertexCell.push_back(Index(i));
-    mc.vertexSample.push_back(kNoIndex);
-  }
-  for (const auto& p : polygons) {
-    mc.polygonVertices.insert(mc.polygonVertices.end(), p.begin(), p.end());
-    mc.polygonOffsets.push_back(Index(mc.polygonVertices.size()));
-    mc.provenance.push_back(PolygonProvenance::DelaunayEdgeFacet);
-    mc.provenanceSamples.push_back({0, 1});
-  }
-  return mc;
+  std::vector<Vec3> points;
+  for (std::size_t i = 0; i < vertices; ++i) points.push_back({double(i), 0, 0});
+  return sheetOf(points, 1, polygons);
 }
 
 ComplexTopology topologyOf(MedialComplex mc) {
