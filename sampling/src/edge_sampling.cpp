@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
@@ -14,6 +15,9 @@
 #include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
 
 #include "face_spacing_field.hpp"
 #include "face_uv_classifier.hpp"
@@ -134,13 +138,16 @@ void gradeFacesFromConvexEdges(SamplingContext& ctx, std::vector<std::vector<Fac
   std::vector<std::unique_ptr<SpacingSources>> narrow(topo.faceCount());
   for (int f = 0; f < topo.faceCount(); ++f)
     if (!sources[f].empty()) narrow[f] = std::make_unique<SpacingSources>(sources[f], FaceSpacingField::kConvexEdgeGrading);
-  for (int e = 0; e < topo.edgeCount(); ++e) {
-    if (topo.edgeDegenerate[e] || ctx.edgeFeatures[e].kind != EdgeKind::Convex) continue;
+  // Each edge's points in parallel, then handed to its faces in edge order
+  // (the same sources on any number of threads).
+  std::vector<std::vector<FaceSpacingField::Source>> alongEdge(topo.edgeCount());
+  tbb::parallel_for(0, topo.edgeCount(), [&](int e) {
+    if (topo.edgeDegenerate[e] || ctx.edgeFeatures[e].kind != EdgeKind::Convex) return;
     const double s = ctx.edgeSpacing[e];
     double finest = s;
     for (int f : topo.edgeFaces[e])
       if (f >= 0 && narrow[f]) finest = std::min(finest, narrow[f]->finest());  // sources are >= the floor
-    if (!(finest < ctx.spacing)) continue;  // nothing finer to pass on
+    if (!(finest < ctx.spacing)) return;  // nothing finer to pass on
     BRepAdaptor_Curve curve(topo.edge(e));
     // Points the finest spacing apart, as many as the edge's own samples
     // there (the k-d tree of SpacingSources takes them all): a point's
@@ -150,7 +157,7 @@ void gradeFacesFromConvexEdges(SamplingContext& ctx, std::vector<std::vector<Fac
     const double length = ctx.edgeFeatures[e].length;
     const double points = std::ceil(length / finest);
     const int n = std::isfinite(points) ? static_cast<int>(std::clamp(points, 2.0, 1e7)) : 2;
-    std::vector<FaceSpacingField::Source> along;
+    std::vector<FaceSpacingField::Source>& along = alongEdge[e];
     for (int i = 0; i <= n; ++i) {
       const gp_Pnt p = curve.Value(curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n);
       double spacing = s;
@@ -158,11 +165,13 @@ void gradeFacesFromConvexEdges(SamplingContext& ctx, std::vector<std::vector<Fac
         if (f >= 0 && narrow[f]) spacing = narrow[f]->allowedNear(p, 0, spacing);
       if (spacing < ctx.spacing) along.push_back({p, spacing});
     }
+  });
+  for (int e = 0; e < topo.edgeCount(); ++e)
     for (int f : topo.edgeFaces[e])
-      if (f >= 0) sources[f].insert(sources[f].end(), along.begin(), along.end());
-  }
-  for (int f = 0; f < topo.faceCount(); ++f)
+      if (f >= 0) sources[f].insert(sources[f].end(), alongEdge[e].begin(), alongEdge[e].end());
+  tbb::parallel_for(0, topo.faceCount(), [&](int f) {
     ctx.faceSpacing[f].gradeFrom(std::move(sources[f]), FaceSpacingField::kConvexEdgeGrading);
+  });
 }
 
 // Fewest steps each edge needs so that every boundary loop of a face has at
@@ -199,10 +208,22 @@ void computeSpacings(SamplingContext& ctx) {
   const SolidTopology& topo = ctx.topo;
   ctx.faceSpacing.clear();
   ctx.faceSpacing.reserve(topo.faceCount());
-  IntCurvesFace_ShapeIntersector rays;
-  rays.Load(topo.solid, FaceSpacingField::rayTolerance(ctx.spacing));
-  for (int f = 0; f < topo.faceCount(); ++f)
-    ctx.faceSpacing.emplace_back(topo.face(f), rays, ctx.minSpacing, ctx.spacing, ctx.gradedSpacing, ctx.boundsScale);
+  {
+    // Faces in parallel, each thread casting its rays through its own
+    // intersector (it keeps its last hits); every field is the same on
+    // any number of threads.
+    std::vector<std::optional<FaceSpacingField>> fields(topo.faceCount());
+    tbb::enumerable_thread_specific<std::unique_ptr<IntCurvesFace_ShapeIntersector>> rays;
+    tbb::parallel_for(0, topo.faceCount(), [&](int f) {
+      std::unique_ptr<IntCurvesFace_ShapeIntersector>& mine = rays.local();
+      if (!mine) {
+        mine = std::make_unique<IntCurvesFace_ShapeIntersector>();
+        mine->Load(topo.solid, FaceSpacingField::rayTolerance(ctx.spacing));
+      }
+      fields[f].emplace(topo.face(f), *mine, ctx.minSpacing, ctx.spacing, ctx.gradedSpacing, ctx.boundsScale);
+    });
+    for (std::optional<FaceSpacingField>& field : fields) ctx.faceSpacing.push_back(std::move(*field));
+  }
 
   // Each edge's curvature, once for both passes below; the tightest for
   // the warning (warnAboutUnresolvedCurves).

@@ -15,6 +15,7 @@
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GCPnts_UniformAbscissa.hxx>
 #include <Standard_Failure.hxx>
+#include <tbb/parallel_for.h>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
@@ -223,7 +224,8 @@ std::vector<std::vector<FaceSpacingField::Source>> narrowFaceSources(const Solid
       boxes[e] = Bnd_Box();
     }
   }
-  for (int f = 0; f < topo.faceCount(); ++f) {
+  // Faces in parallel: each reads the shared edges and writes its own sources.
+  tbb::parallel_for(0, topo.faceCount(), [&](int f) {
     // A face OCCT cannot measure (a broken curve in a hostile file) asks
     // for nothing: the rest of the sampling copes with it or reports it.
     try {
@@ -231,7 +233,7 @@ std::vector<std::vector<FaceSpacingField::Source>> narrowFaceSources(const Solid
     } catch (const Standard_Failure&) {
       sources[f].clear();
     }
-  }
+  });
   return sources;
 }
 
