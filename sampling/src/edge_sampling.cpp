@@ -17,11 +17,11 @@
 #include <TopoDS.hxx>
 
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 
 #include "face_spacing_field.hpp"
 #include "face_uv_classifier.hpp"
 #include "narrow_faces.hpp"
+#include "ordered_parallel.hpp"
 #include "sampling_context.hpp"
 
 namespace cadmedial {
@@ -141,7 +141,7 @@ void gradeFacesFromConvexEdges(SamplingContext& ctx, std::vector<std::vector<Fac
   // Each edge's points in parallel, then handed to its faces in edge order
   // (the same sources on any number of threads).
   std::vector<std::vector<FaceSpacingField::Source>> alongEdge(topo.edgeCount());
-  tbb::parallel_for(0, topo.edgeCount(), [&](int e) {
+  parallelForInOrder(topo.edgeCount(), [&](int e) {
     if (topo.edgeDegenerate[e] || ctx.edgeFeatures[e].kind != EdgeKind::Convex) return;
     const double s = ctx.edgeSpacing[e];
     double finest = s;
@@ -169,7 +169,7 @@ void gradeFacesFromConvexEdges(SamplingContext& ctx, std::vector<std::vector<Fac
   for (int e = 0; e < topo.edgeCount(); ++e)
     for (int f : topo.edgeFaces[e])
       if (f >= 0) sources[f].insert(sources[f].end(), alongEdge[e].begin(), alongEdge[e].end());
-  tbb::parallel_for(0, topo.faceCount(), [&](int f) {
+  parallelForInOrder(topo.faceCount(), [&](int f) {
     ctx.faceSpacing[f].gradeFrom(std::move(sources[f]), FaceSpacingField::kConvexEdgeGrading);
   });
 }
@@ -214,7 +214,7 @@ void computeSpacings(SamplingContext& ctx) {
     // any number of threads.
     std::vector<std::optional<FaceSpacingField>> fields(topo.faceCount());
     tbb::enumerable_thread_specific<std::unique_ptr<IntCurvesFace_ShapeIntersector>> rays;
-    tbb::parallel_for(0, topo.faceCount(), [&](int f) {
+    parallelForInOrder(topo.faceCount(), [&](int f) {
       std::unique_ptr<IntCurvesFace_ShapeIntersector>& mine = rays.local();
       if (!mine) {
         mine = std::make_unique<IntCurvesFace_ShapeIntersector>();

@@ -58,8 +58,9 @@ struct Tile {
 
 // What a dart's evaluation found, before the darts kept earlier in its batch
 // are looked at: rejected, or clear of every sample kept before the batch
-// and (when the UV classifier was asked) inside or outside the face.
-enum class DartState : std::uint8_t { Rejected, Clear, Inside, Outside };
+// and (when the UV classifier was asked) inside or outside the face; or
+// Failed: OCCT threw, and the dart is evaluated again in order (see throwDarts).
+enum class DartState : std::uint8_t { Rejected, Clear, Inside, Outside, Failed };
 
 // One dart: its random numbers, then what evaluating it found.
 struct Dart {
@@ -178,7 +179,7 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
 
     // Each thread evaluates darts with its own surface adaptor (B-spline
     // adaptors cache a span) and its own UV classifier, as ExactOracle does.
-    tbb::enumerable_thread_specific<std::unique_ptr<DartEvaluators>> evaluators;
+    tbb::enumerable_thread_specific<DartEvaluators> evaluators(face);
     std::mt19937_64 rng(seed * 1000003ull + static_cast<unsigned>(f));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::vector<Dart> batch;
@@ -193,16 +194,11 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
     // smallest instead of the point's, a fine strip along one edge, a hole's
     // rim, made the whole tile as fine.)
     // The darts of a leaf go in batches: their random numbers are drawn in
-    // the order above, the costly part (surface point, field, clearance from
+    // throw order, the costly part (surface point, field, clearance from
     // the samples kept before the batch, UV classifier) runs in parallel,
     // and then, in order, each survivor is checked against the darts kept
     // earlier in its batch. Same samples as one dart at a time, on any
     // number of threads.
-    auto evaluatorsHere = [&]() -> DartEvaluators& {
-      std::unique_ptr<DartEvaluators>& mine = evaluators.local();
-      if (!mine) mine = std::make_unique<DartEvaluators>(face);
-      return *mine;
-    };
     auto classify = [&](DartEvaluators& mine, Dart& d) {
       d.state = mine.classifier.Perform(gp_Pnt2d(d.u, d.v)) == TopAbs_IN ? DartState::Inside : DartState::Outside;
     };
@@ -241,9 +237,11 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
       const double dartsAfter = std::floor(totalDarts * weightBefore / weightSum);
       const std::int64_t dartsHere = static_cast<std::int64_t>(dartsAfter - dartsBefore);
       dartsBefore = dartsAfter;
-      std::int64_t batchSize = kMinBatch;  // a leaf starts empty: most darts are clear
+      // A leaf starts empty: most darts are clear, and many of them are
+      // then rejected by a dart kept earlier in the same batch.
+      std::int64_t batchSize = ctx.oneDartAtATime ? 1 : kMinBatch;
       for (std::int64_t first = 0; first < dartsHere; first += batchSize) {
-        if (first > 0) batchSize = nextBatchSize(batchSize, clearSeen);
+        if (first > 0 && !ctx.oneDartAtATime) batchSize = nextBatchSize(batchSize, clearSeen);
         const std::size_t n = static_cast<std::size_t>(std::min<std::int64_t>(batchSize, dartsHere - first));
         batch.resize(n);
         for (Dart& d : batch) {
@@ -256,24 +254,34 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
         // a dart kept earlier in the batch then rejects: most of them while
         // a tile is still empty (the face sampling took 1.9x the time of
         // one dart at a time on NIST CTC-01). So it is asked in parallel
-        // only while most such darts were kept in the last batch, and
-        // otherwise in order, for the darts still clear.
-        const bool speculate = clearKept >= 0.5 * clearSeen;
+        // only while most such darts were kept in the last batch of this
+        // leaf, and otherwise in order, for the darts still clear.
+        const bool speculate = first > 0 && !ctx.oneDartAtATime && clearKept >= 0.5 * clearSeen;
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kDartGrain),
                           [&](const tbb::blocked_range<std::size_t>& range) {
-                            DartEvaluators& mine = evaluatorsHere();
-                            for (std::size_t i = range.begin(); i != range.end(); ++i)
-                              evaluate(mine, batch[i], speculate);
+                            DartEvaluators& mine = evaluators.local();
+                            for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                              try {
+                                evaluate(mine, batch[i], speculate);
+                              } catch (...) {
+                                batch[i].state = DartState::Failed;
+                              }
+                            }
                           });
         acceptedInBatch.clear();
         clearSeen = clearKept = 0;
         for (std::size_t i = 0; i < n; ++i) {
           Dart& d = batch[i];
+          // A dart OCCT failed on (it may have got further than one at a
+          // time would take it) goes again against every sample kept before
+          // it, which is how one at a time evaluates it: it throws exactly
+          // where that would.
+          if (d.state == DartState::Failed) evaluate(evaluators.local(), d, false);
           if (d.state == DartState::Rejected) continue;
           ++clearSeen;
           if (!clearOfBatch(d)) continue;
           ++clearKept;
-          if (d.state == DartState::Clear) classify(evaluatorsHere(), d);
+          if (d.state == DartState::Clear) classify(evaluators.local(), d);
           if (d.state != DartState::Inside) continue;
           acceptedInBatch.push_back(i);
           ctx.recordFaceUv(builder.add(d.p, SampleKind::Face, f, d.local), gp_Pnt2d(d.u, d.v));

@@ -15,9 +15,10 @@
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GCPnts_UniformAbscissa.hxx>
 #include <Standard_Failure.hxx>
-#include <tbb/parallel_for.h>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+
+#include "ordered_parallel.hpp"
 
 namespace cadmedial {
 
@@ -225,7 +226,7 @@ std::vector<std::vector<FaceSpacingField::Source>> narrowFaceSources(const Solid
     }
   }
   // Faces in parallel: each reads the shared edges and writes its own sources.
-  tbb::parallel_for(0, topo.faceCount(), [&](int f) {
+  parallelForInOrder(topo.faceCount(), [&](int f) {
     // A face OCCT cannot measure (a broken curve in a hostile file) asks
     // for nothing: the rest of the sampling copes with it or reports it.
     try {

@@ -167,6 +167,7 @@ SolidSampling sampleSolid(const TopoDS_Shape& solid, const SamplingParams& param
   ctx.minSpacing = ctx.spacing * params.minSpacingFraction;
   ctx.gradedSpacing = params.gradedSpacing;
   ctx.boundsScale = params.boundsScale;
+  ctx.oneDartAtATime = params.oneDartAtATime;
   set.spacing = ctx.spacing;
   set.faceCount = topo.faceCount();
   const Bnd_Box box = boundingBox(solid);

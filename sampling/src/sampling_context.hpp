@@ -27,6 +27,7 @@ struct SamplingContext {
   double minSpacing = 0;  // floor for curvature refinement
   bool gradedSpacing = true;  // SamplingParams::gradedSpacing
   double boundsScale = 1.0;   // SamplingParams::boundsScale
+  bool oneDartAtATime = false;  // SamplingParams::oneDartAtATime
   std::vector<FaceSpacingField> faceSpacing;  // per face: one value, or graded over its UV box
   std::vector<double> edgeSpacing;   // per edge (target; its smallest along it)
   // Per edge: (arc length from its first vertex, spacing) along it where the

@@ -32,6 +32,10 @@ struct SamplingParams {
   // sampled again (cli/solid_run.hpp). A torus of minor radius 2 and major
   // radius 30 got the same 27,009 samples at h, 0.97 h and 0.94 h before.
   double boundsScale = 1.0;
+  // Face darts evaluated one at a time, in the order thrown, instead of in
+  // parallel batches (face_sampling.cpp). The same samples either way,
+  // only slower: the reference the tests hold the batches to.
+  bool oneDartAtATime = false;
 };
 
 // Edge and vertex counts of a solid's features.
