@@ -15,7 +15,10 @@
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopoDS.hxx>
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include "face_uv_classifier.hpp"
+#include "ordered_parallel.hpp"
 
 namespace cadmedial {
 
@@ -148,15 +151,23 @@ std::vector<VertexFeature> classifyVertices(const SolidTopology& topo, const std
 
   TopTools_IndexedDataMapOfShapeListOfShape vertexToFaces;
   TopExp::MapShapesAndUniqueAncestors(topo.solid, TopAbs_VERTEX, TopAbs_FACE, vertexToFaces);
-  std::map<int, std::unique_ptr<FaceUVClassifier>> faceClassifiers;
-  auto faceClassifier = [&](int f) -> FaceUVClassifier& {
-    auto& slot = faceClassifiers[f];
-    if (!slot) slot = std::make_unique<FaceUVClassifier>(topo.face(f), 1e-9);
-    return *slot;
+  // Vertices in parallel (each answer is the vertex's own; the probes near a
+  // vertex fall back to OCCT's exact face classifier, which recomputes the
+  // face's UV bounds, most of this stage's time on NIST CTC-01). Each thread
+  // has its own classifiers.
+  struct Classifiers {
+    std::map<int, std::unique_ptr<FaceUVClassifier>> faces;
+    std::unique_ptr<BRepClass3d_SolidClassifier> solid;
   };
-  std::unique_ptr<BRepClass3d_SolidClassifier> solidClassifier;
+  tbb::enumerable_thread_specific<Classifiers> perThread;
 
-  for (int v = 0; v < topo.vertexCount(); ++v) {
+  parallelForInOrder(topo.vertexCount(), [&](int v) {
+    Classifiers& mine = perThread.local();
+    auto faceClassifier = [&](int f) -> FaceUVClassifier& {
+      auto& slot = mine.faces[f];
+      if (!slot) slot = std::make_unique<FaceUVClassifier>(topo.face(f), 1e-9);
+      return *slot;
+    };
     VertexFeature& feat = out[v];
     const TopoDS_Vertex& vertex = TopoDS::Vertex(topo.vertices(v + 1));
     std::vector<gp_Vec> sharpTangents;
@@ -176,11 +187,11 @@ std::vector<VertexFeature> classifyVertices(const SolidTopology& topo, const std
       }
     }
     feat.sharpEdgeEnds = static_cast<int>(sharpTangents.size());
-    if (feat.sharpEdgeEnds == 0) continue;
+    if (feat.sharpEdgeEnds == 0) return;
     const bool passThrough = feat.sharpEdgeEnds == 2 && sharpKinds[0] == sharpKinds[1] &&
                              sharpTangents[0].Dot(sharpTangents[1]) < kPassThroughCos;
     feat.isCorner = !passThrough;
-    if (!feat.isCorner) continue;
+    if (!feat.isCorner) return;
 
     // Probe the interior tangent cone with rays along edges and into faces.
     std::vector<gp_Vec> rays = allTangents;
@@ -194,7 +205,7 @@ std::vector<VertexFeature> classifyVertices(const SolidTopology& topo, const std
                rays.end());
     feat.nonConcave = true;
     const auto scored = bestHalfSpaceNormals(rays);
-    if (!solidClassifier) solidClassifier = std::make_unique<BRepClass3d_SolidClassifier>(topo.solid);
+    if (!mine.solid) mine.solid = std::make_unique<BRepClass3d_SolidClassifier>(topo.solid);
     const gp_Pnt origin = BRep_Tool::Pnt(vertex);
     std::vector<gp_Vec> tried;
     for (const auto& [margin, n] : scored) {
@@ -205,13 +216,13 @@ std::vector<VertexFeature> classifyVertices(const SolidTopology& topo, const std
       tried.push_back(n);
       // The open half-space {x·n < 0} is free of boundary; is it inside?
       const gp_Pnt inside = origin.Translated(-n * probe);
-      solidClassifier->Perform(inside, 1e-9);
-      if (solidClassifier->State() == TopAbs_IN) {
+      mine.solid->Perform(inside, 1e-9);
+      if (mine.solid->State() == TopAbs_IN) {
         feat.nonConcave = false;
         break;
       }
     }
-  }
+  });
   return out;
 }
 

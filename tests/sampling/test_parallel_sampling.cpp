@@ -1,4 +1,5 @@
-// The spacing fields and the face darts run on TBB threads (edge_sampling.cpp,
+// The corner classification, the spacing fields and the face darts run on
+// TBB threads (feature_classification.cpp, edge_sampling.cpp,
 // narrow_faces.cpp, face_sampling.cpp). The samples must be those of the
 // serial reference, down to the last bit: darts evaluated one at a time on
 // one thread (SamplingParams::oneDartAtATime) against the parallel batches on
@@ -49,7 +50,8 @@ void expectSameAsOneDartAtATime(const TopoDS_Shape& solid, const std::string& wh
   Index differing = 0;
   for (Index i = 0; i < serial.size(); ++i)
     if (serial.points[i] != parallel.points[i] || serial.kind[i] != parallel.kind[i] ||
-        serial.owner[i] != parallel.owner[i])
+        serial.owner[i] != parallel.owner[i] || serial.onConvexEdge[i] != parallel.onConvexEdge[i] ||
+        serial.isNonConcaveCorner[i] != parallel.isNonConcaveCorner[i])
       ++differing;
   EXPECT_EQ(differing, 0u) << what << ": samples differ between one dart at a time and " << kThreads
                            << " threads";
