@@ -38,7 +38,6 @@ constexpr int kMaxSplits = 8;                  // in four, at most this often
 constexpr std::int64_t kMinBatch = 64, kMaxBatch = 4096;
 constexpr double kClearPerBatch = 16;
 constexpr std::size_t kDartGrain = 16;  // darts per parallel task
-constexpr std::size_t kBatchScan = 8;   // up to this many darts kept in a batch: scanned, not looked up
 
 std::int64_t nextBatchSize(std::int64_t last, std::size_t clearInLast) {
   const double size = kClearPerBatch * static_cast<double>(last) / std::max<double>(1.0, static_cast<double>(clearInLast));
@@ -183,7 +182,7 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
     std::mt19937_64 rng(seed * 1000003ull + static_cast<unsigned>(f));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::vector<Dart> batch;
-    std::vector<std::size_t> acceptedInBatch;
+    bool keptInBatch = false;
     double weightBefore = 0, dartsBefore = 0;
     std::size_t clearSeen = 0, clearKept = 0;  // in the last batch: darts clear of the samples before it, and kept clear by it
     // A dart is kept iff, in the order thrown, it passes the area-element
@@ -220,18 +219,9 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
       if (classifyToo) classify(mine, d);
     };
     // Clear of the darts kept earlier in the batch: the builder holds them
-    // too, and every sample it held before the batch is already cleared.
-    auto clearOfBatch = [&](const Dart& d) {
-      if (acceptedInBatch.empty()) return true;
-      if (acceptedInBatch.size() > kBatchScan) return builder.isClear(d.p, d.reach);
-      for (std::size_t k : acceptedInBatch) {
-        const Dart& q = batch[k];
-        const double dx = q.p.X() - d.p.X(), dy = q.p.Y() - d.p.Y(), dz = q.p.Z() - d.p.Z();
-        const double limit = std::max(d.reach, q.local);
-        if (dx * dx + dy * dy + dz * dz < limit * limit) return false;
-      }
-      return true;
-    };
+    // too (with their own radii), and every sample it held before the batch
+    // is already cleared, so asking it again gives one-at-a-time's answer.
+    auto clearOfBatch = [&](const Dart& d) { return !keptInBatch || builder.isClear(d.p, d.reach); };
     auto throwDarts = [&](const Tile& leaf, double radius) {
       weightBefore += weight(leaf, radius);
       const double dartsAfter = std::floor(totalDarts * weightBefore / weightSum);
@@ -268,7 +258,7 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
                               }
                             }
                           });
-        acceptedInBatch.clear();
+        keptInBatch = false;
         clearSeen = clearKept = 0;
         for (std::size_t i = 0; i < n; ++i) {
           Dart& d = batch[i];
@@ -283,7 +273,7 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
           ++clearKept;
           if (d.state == DartState::Clear) classify(evaluators.local(), d);
           if (d.state != DartState::Inside) continue;
-          acceptedInBatch.push_back(i);
+          keptInBatch = true;
           ctx.recordFaceUv(builder.add(d.p, SampleKind::Face, f, d.local), gp_Pnt2d(d.u, d.v));
         }
       }
