@@ -8,6 +8,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 namespace cadmedial {
@@ -34,42 +35,63 @@ PairMeshBuilder::PairMeshBuilder(const DelaunayVoronoi& dv, const SampleSet& sam
     : dv_(dv), dt_(dv.triangulation()), samples_(samples) {
   weldTolerance_ = 1e-8 * boxOf(samples.points.data(), samples.points.data() + samples.points.size()).diagonal();
   sheetCells_.assign(dv.cellCount(), 0);
+  sheetFacets_.assign(dv.cellCount(), 0);
   if (!axis) return;
-  sheetFacetEdges_.reserve(axis->polygonCount());
-  sheetVoronoiEdges_.reserve(axis->polygonVertices.size());
   // A vertex the axis welded stands for several cells (coincident
   // circumcenters): each of them is on the sheets, and so is a Voronoi edge
   // between any of the cells of two consecutive corners, or of one corner
   // (the zero-length edges the weld dropped).
-  std::unordered_map<Index, std::vector<Index>> alsoCells;
-  for (const auto& [welded, kept] : axis->weldedCells) alsoCells[kept].push_back(welded);
-  for (const auto& [kept, welded] : alsoCells) {
-    std::vector<Index> cells = welded;
+  // Per kept cell, the cells welded into it: a run of `welded` (sorted by
+  // the kept cell, in weldedCells' order within a run) that firstWelded
+  // points at, so that a polygon corner's lookup is an array read.
+  std::vector<std::array<Index, 2>> welded = axis->weldedCells;  // {welded, kept}
+  std::stable_sort(welded.begin(), welded.end(),
+                   [](const std::array<Index, 2>& a, const std::array<Index, 2>& b) { return a[1] < b[1]; });
+  std::vector<Index> firstWelded(dv.cellCount(), kNoIndex);
+  for (std::size_t k = welded.size(); k-- > 0;)
+    if (welded[k][1] < firstWelded.size()) firstWelded[welded[k][1]] = static_cast<Index>(k);
+  auto forEachCell = [&](Index c, auto&& f) {
+    if (c >= dv.cellCount()) return;  // (kNoIndex: a sample vertex)
+    f(c);
+    for (Index k = firstWelded[c]; k != kNoIndex && k < welded.size() && welded[k][1] == c; ++k) f(welded[k][0]);
+  };
+  // Polygons are marked in parallel: bits are set with atomic ORs, so the
+  // masks do not depend on the order.
+  auto markVoronoiEdge = [&](Index x, Index y) {
+    if (x == y || x >= dv.cellCount() || y >= dv.cellCount()) return;
+    const Cell_handle cx = dv.cell(x), cy = dv.cell(y);
+    for (int i = 0; i < 4; ++i)
+      if (cx->neighbor(i) == cy) {
+        __atomic_fetch_or(&sheetFacets_[x], static_cast<std::uint8_t>(1u << i), __ATOMIC_RELAXED);
+        __atomic_fetch_or(&sheetFacets_[y], static_cast<std::uint8_t>(1u << cy->index(cx)), __ATOMIC_RELAXED);
+        return;
+      }
+  };
+  for (std::size_t k = 0; k < welded.size();) {
+    std::vector<Index> cells;
+    const Index kept = welded[k][1];
+    for (; k < welded.size() && welded[k][1] == kept; ++k) cells.push_back(welded[k][0]);
     cells.push_back(kept);
     for (std::size_t i = 0; i < cells.size(); ++i)
-      for (std::size_t j = i + 1; j < cells.size(); ++j) sheetVoronoiEdges_.insert(cells[i], cells[j], 1);
+      for (std::size_t j = i + 1; j < cells.size(); ++j) markVoronoiEdge(cells[i], cells[j]);
   }
-  auto forEachCell = [&](Index c, auto&& f) {
-    if (c == kNoIndex) return;
-    f(c);
-    if (alsoCells.empty()) return;
-    const auto it = alsoCells.find(c);
-    if (it != alsoCells.end())
-      for (Index other : it->second) f(other);
-  };
-  for (std::size_t p = 0; p < axis->polygonCount(); ++p) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, axis->polygonCount()), [&](const auto& range) {
+    for (std::size_t p = range.begin(); p != range.end(); ++p) {
+      const Index b = axis->polygonOffsets[p], e = axis->polygonOffsets[p + 1];
+      for (Index k = b; k < e; ++k) {
+        const Index c = axis->vertexCell[axis->polygonVertices[k]];
+        const Index d = axis->vertexCell[axis->polygonVertices[k + 1 < e ? k + 1 : b]];
+        forEachCell(c, [&](Index x) {
+          __atomic_store_n(&sheetCells_[x], std::uint8_t{1}, __ATOMIC_RELAXED);
+          forEachCell(d, [&](Index y) { markVoronoiEdge(x, y); });
+        });
+      }
+    }
+  });
+  sheetFacetEdges_.reserve(axis->polygonCount());
+  for (std::size_t p = 0; p < axis->polygonCount(); ++p)
     if (axis->provenance[p] == PolygonProvenance::DelaunayEdgeFacet)
       sheetFacetEdges_.insert(axis->provenanceSamples[p][0], axis->provenanceSamples[p][1], 1);
-    const Index b = axis->polygonOffsets[p], e = axis->polygonOffsets[p + 1];
-    for (Index k = b; k < e; ++k) {
-      const Index c = axis->vertexCell[axis->polygonVertices[k]];
-      const Index d = axis->vertexCell[axis->polygonVertices[k + 1 < e ? k + 1 : b]];
-      forEachCell(c, [&](Index x) {
-        if (x < dv.cellCount()) sheetCells_[x] = 1;
-        forEachCell(d, [&](Index y) { sheetVoronoiEdges_.insert(x, y, 1); });
-      });
-    }
-  }
 }
 
 PairMesh PairMeshBuilder::build(const std::vector<std::uint8_t>& inner) {
@@ -430,7 +452,7 @@ void PairMeshBuilder::edge(Vertex_handle va, Vertex_handle vb, std::vector<Cell_
   for (std::size_t i = 0; i < k; ++i) {  // boundary edge: Edge-Edge per inner Voronoi edge
     const Index ci = DelaunayVoronoi::cellId(ring[i]), cj = DelaunayVoronoi::cellId(ring[(i + 1) % k]);
     if (!isInner(ci) || !isInner(cj)) continue;
-    const bool linked = sheetVoronoiEdges_.find(ci, cj) != kNoIndex;
+    const bool linked = (sheetFacets_[ci] >> ring[i]->index(ring[(i + 1) % k]) & 1) != 0;
     add(out, PairElementType::EdgeEdge, {a, b, nodeOfCell_[ci], nodeOfCell_[cj]}, {ci, cj}, {a, b, kNoIndex}, linked);
     ++out.counts.edgeEdge;
   }

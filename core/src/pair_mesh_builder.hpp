@@ -71,7 +71,10 @@ class PairMeshBuilder {
   const SampleSet& samples_;
   double weldTolerance_ = 0;  // 1e-8 of the samples' bounding-box diagonal
   PairTable sheetFacetEdges_;    // Delaunay edges {p, q} of inner CAD_MEDIAL facets
-  PairTable sheetVoronoiEdges_;  // cell pairs that are edges of its polygons
+  // Per cell, bit i: the Voronoi edge to its neighbour i (dual to facet i)
+  // is an edge of its polygons. Only edges between neighbours are ever
+  // asked for, so a 4-bit mask per cell replaces a table of cell pairs.
+  std::vector<std::uint8_t> sheetFacets_;
   std::vector<std::uint8_t> sheetCells_;
   // Per call:
   const std::vector<std::uint8_t>* inner_ = nullptr;

@@ -186,6 +186,70 @@ TEST(PairMesh, PlanarSolidsAreExactAndLinkedToTheirSheets) {
   }
 }
 
+// Which elements are on the axis, from the axis itself by brute force: a
+// Face-Vertex element iff its Delaunay edge's facet is an axis polygon, an
+// Edge-Edge element iff its Voronoi edge joins the cells of two consecutive
+// corners of a polygon (a welded corner stands for every cell welded into
+// it, and the cells of one welded corner are joined too), a Vertex-Face
+// element iff its cell is such a corner. The build keeps these as a table
+// of Delaunay edges and a mask of facets per cell; a facet bit set on the
+// wrong side, or a welded cell missed, shows here.
+TEST(PairMesh, OnSheetsFlagsAreThoseOfTheAxisPolygons) {
+  for (const PlanarSolid& solid : {makeBox(1.0, 0.7, 0.5), makeLPrism(), makeBoxWithSquareHole()}) {
+    SamplingOptions o;
+    o.spacing = 0.08;
+    const SampleSet s = samplePlanarSolid(solid, o);
+    const MedialResult axis = computeCadMedial(s);
+    const DelaunayVoronoi dv(s.points);
+    const PairMesh m = buildPairMesh(dv, s, exactLabels(dv, solid.inside), &axis);
+    std::map<Index, std::vector<Index>> weldedInto;
+    for (const auto& [welded, kept] : axis.weldedCells) weldedInto[kept].push_back(welded);
+    auto cellsOf = [&](Index c) {
+      std::vector<Index> cells;
+      if (c == kNoIndex) return cells;
+      cells.push_back(c);
+      const auto it = weldedInto.find(c);
+      if (it != weldedInto.end()) cells.insert(cells.end(), it->second.begin(), it->second.end());
+      return cells;
+    };
+    auto pair = [](Index a, Index b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
+    std::set<std::pair<Index, Index>> facetEdges, voronoiEdges;
+    std::set<Index> cornerCells;
+    for (const auto& [kept, welded] : weldedInto) {
+      const std::vector<Index> cells = cellsOf(kept);
+      for (Index x : cells)
+        for (Index y : cells)
+          if (x != y) voronoiEdges.insert(pair(x, y));
+    }
+    for (std::size_t p = 0; p < axis.polygonCount(); ++p) {
+      if (axis.provenance[p] == PolygonProvenance::DelaunayEdgeFacet)
+        facetEdges.insert(pair(axis.provenanceSamples[p][0], axis.provenanceSamples[p][1]));
+      const Index b = axis.polygonOffsets[p], e = axis.polygonOffsets[p + 1];
+      for (Index k = b; k < e; ++k)
+        for (Index x : cellsOf(axis.vertexCell[axis.polygonVertices[k]])) {
+          cornerCells.insert(x);
+          for (Index y : cellsOf(axis.vertexCell[axis.polygonVertices[k + 1 < e ? k + 1 : b]]))
+            voronoiEdges.insert(pair(x, y));
+        }
+    }
+    std::size_t wrong = 0, linked = 0;
+    for (std::size_t i = 0; i < m.size(); ++i) {
+      const auto& medial = m.medialSimplex[i];
+      bool expected = false;
+      switch (m.type[i]) {
+        case PairElementType::FaceVertex: expected = facetEdges.count(pair(medial[0], medial[1])) != 0; break;
+        case PairElementType::EdgeEdge: expected = voronoiEdges.count(pair(medial[0], medial[1])) != 0; break;
+        case PairElementType::VertexFace: expected = cornerCells.count(medial[0]) != 0; break;
+      }
+      wrong += (m.onSheets[i] != 0) != expected ? 1 : 0;
+      linked += expected ? 1 : 0;
+    }
+    EXPECT_EQ(wrong, 0u) << solid.name;
+    EXPECT_GT(linked, 0u) << solid.name;
+    EXPECT_FALSE(axis.weldedCells.empty()) << solid.name << ": no welded corner, so that rule went untested";
+  }
+}
+
 TEST(PairMesh, GridBoxWithCosphericalSamplesStaysValid) {
   const SampleSet s = gridBoxSamples(8, 0.125);
   buildAndCheck("grid box", s, [](const Vec3& p) {
