@@ -65,21 +65,18 @@ double negligibleVolume(const PairMesh& m, std::size_t i) {
 
 namespace {
 
-std::size_t countNegative(const PairMesh& m) {
-  return countElements(m.tets.size(), [&](std::size_t i) { return isInverted(m, i); });
-}
-
 // Rounds of Voronoi node moves (first case of §4.1); marks moved nodes.
 // Returns the number of elements left needing repair (negative or flat),
 // and flags them in badFlag (per element).
+// With flagsCurrent, badFlag already says which elements need repair.
 std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds, std::vector<std::uint8_t>& moved,
-                             std::vector<std::uint8_t>& badFlag) {
+                             std::vector<std::uint8_t>& badFlag, bool flagsCurrent) {
   const std::size_t n = m.nodes.size();
   moved.resize(n, 0);
   // Per element: needs repair. Kept current as nodes move (only the
   // elements around a moved node change, and the polygons re-triangulated
   // update theirs), so that no round has to test all elements again.
-  badFlag.assign(m.tets.size(), 0);
+  if (!flagsCurrent) badFlag.assign(m.tets.size(), 0);
   // The elements flagged, so that a round looks at those only (a few
   // hundred among 10^5-10^6): every flagged element is listed; elements
   // flagged no more, and repeats, until the next count.
@@ -92,9 +89,10 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
     return flagged.size();
   };
   auto flagAll = [&]() {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.tets.size()), [&](const auto& r) {
-      for (std::size_t i = r.begin(); i != r.end(); ++i) badFlag[i] = needsRepair(m, i) ? 1 : 0;
-    });
+    if (!flagsCurrent)
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.tets.size()), [&](const auto& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) badFlag[i] = needsRepair(m, i) ? 1 : 0;
+      });
     flagged.clear();
     for (std::size_t i = 0; i < m.tets.size(); ++i)
       if (badFlag[i]) flagged.push_back(i);
@@ -353,7 +351,9 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
 // leaves no more elements needing repair around it than before (on curved
 // parts close nodes are often genuinely distinct, and then the move is
 // refused). Returns the number of nodes moved.
-std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance) {
+// The elements of the clusters moved go to `changed` (unsorted, perhaps
+// repeated), when given.
+std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance, std::vector<Index>* changed) {
   if (!(tolerance > 0)) return 0;
   const std::size_t n = m.nodes.size();
   // Clusters: nodes joined through elements by pairs closer than tolerance.
@@ -460,14 +460,23 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance) {
     waves[wave].push_back(a);
   }
   std::size_t welded = 0;
+  std::vector<std::uint8_t> movedCluster(active.size(), 0);
   for (const std::vector<std::size_t>& wave : waves)
     welded += tbb::parallel_reduce(
         tbb::blocked_range<std::size_t>(0, wave.size()), std::size_t(0),
         [&](const tbb::blocked_range<std::size_t>& r, std::size_t sum) {
-          for (std::size_t k = r.begin(); k != r.end(); ++k) sum += decide(wave[k]);
+          for (std::size_t k = r.begin(); k != r.end(); ++k) {
+            const std::size_t members = decide(wave[k]);
+            movedCluster[wave[k]] = members > 0 ? 1 : 0;
+            sum += members;
+          }
           return sum;
         },
         std::plus<>());
+  if (changed)
+    for (std::size_t a = 0; a < active.size(); ++a)
+      if (movedCluster[a])
+        changed->insert(changed->end(), elements.begin() + elementOffsets[a], elements.begin() + elementOffsets[a + 1]);
   return welded;
 }
 
@@ -475,16 +484,31 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance) {
 
 std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, const RepairOptions& options,
                                   std::size_t* needingRepairLeft) {
-  if (options.countInvertedBefore) m.counts.invertedBeforeRepair = countNegative(m);
-  if (options.weldCloseNodes) m.counts.weldedNodes += weldCloseVoronoiNodes(m, m.spacing / 200);
   std::vector<std::uint8_t> moved, needsRepairFlag;
-  std::size_t needingRepair = moveVoronoiNodes(m, dv, options.rounds, moved, needsRepairFlag);
+  // The count before repair comes from the pass that flags the elements
+  // needing repair (inverted ones are among them); the weld then flags
+  // again the elements it changed, so the first round need not test all.
+  bool flagsCurrent = false;
+  if (options.countInvertedBefore) {
+    needsRepairFlag.assign(m.tets.size(), 0);
+    m.counts.invertedBeforeRepair = countElements(m.tets.size(), [&](std::size_t i) {
+      needsRepairFlag[i] = needsRepair(m, i) ? 1 : 0;
+      return needsRepairFlag[i] != 0 && isInverted(m, i);
+    });
+    flagsCurrent = true;
+  }
+  if (options.weldCloseNodes) {
+    std::vector<Index> changed;
+    m.counts.weldedNodes += weldCloseVoronoiNodes(m, m.spacing / 200, flagsCurrent ? &changed : nullptr);
+    for (Index i : changed) needsRepairFlag[i] = needsRepair(m, i) ? 1 : 0;
+  }
+  std::size_t needingRepair = moveVoronoiNodes(m, dv, options.rounds, moved, needsRepairFlag, flagsCurrent);
   if (needingRepair > 0) {
     std::vector<std::size_t> flagged;  // the negative elements are among them
     for (std::size_t i = 0; i < m.tets.size(); ++i)
       if (needsRepairFlag[i]) flagged.push_back(i);
     m.counts.splitEdges = splitBoundaryEdges(m, &flagged);  // none kept: the mesh and its flags as they were
-    if (m.counts.splitEdges > 0) needingRepair = moveVoronoiNodes(m, dv, options.rounds, moved, needsRepairFlag);
+    if (m.counts.splitEdges > 0) needingRepair = moveVoronoiNodes(m, dv, options.rounds, moved, needsRepairFlag, false);
   }
   // Inverted elements are among those flagged as needing repair: only they are tested.
   std::size_t bad = 0;
