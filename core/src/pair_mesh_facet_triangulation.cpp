@@ -134,11 +134,16 @@ std::size_t retriangulateFaceVertexPolygons(PairMesh& m, std::vector<std::uint8_
   for (std::uint64_t key : keys)
     if (!slots.count(key)) fresh[key];
   if (!fresh.empty()) {
-    for (std::size_t i = 0; i < m.tets.size(); ++i)
-      if (m.type[i] == PairElementType::FaceVertex) {
-        const auto it = fresh.find(facetKey(m.medialSimplex[i]));
-        if (it != fresh.end()) it->second.push_back(i);
-      }
+    // In parallel, and past the table only for elements whose edge starts
+    // at a sample of a fresh polygon's edge: this pass runs once per repair
+    // round that meets new polygons, over every element.
+    std::vector<std::uint8_t> startsFresh(m.nodes.size(), 0);
+    for (const auto& entry : fresh) startsFresh[static_cast<Index>(entry.first >> 32)] = 1;
+    const std::vector<std::size_t> found = selectElements(m.tets.size(), [&](std::size_t i) {
+      return m.type[i] == PairElementType::FaceVertex && startsFresh[m.medialSimplex[i][0]] &&
+             fresh.count(facetKey(m.medialSimplex[i])) != 0;
+    });
+    for (std::size_t i : found) fresh.at(facetKey(m.medialSimplex[i])).push_back(i);
     for (auto& [key, elements] : fresh) slots.emplace(key, std::move(elements));
   }
 
