@@ -403,6 +403,7 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance, std::vector<Ind
   std::vector<Index> active;
   std::vector<std::size_t> elementOffsets{0};
   std::vector<Index> elements;
+  std::vector<std::uint8_t> listed(m.tets.size(), 0);
   for (Index c = 0; c < clusters.size(); ++c) {
     const std::vector<Index>& cluster = clusters[c];
     if (cluster.size() < 2) continue;
@@ -414,10 +415,16 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance, std::vector<Ind
     // first: chains of close pairs can hold thousands of nodes (the apex of
     // a cone), and the member-by-member test below is quadratic.
     if (boxOf(start.data(), start.data() + start.size()).widestSide() > 4 * tolerance) continue;
+    // (Each once, marked while listed: their order does not matter below,
+    // and sorting them was a sixth of the torus's weld.)
     const std::size_t first = elements.size();
-    for (Index v : cluster) incidence.forEach(m, v, [&](Index i) { elements.push_back(i); });
-    std::sort(elements.begin() + first, elements.end());
-    elements.erase(std::unique(elements.begin() + first, elements.end()), elements.end());
+    for (Index v : cluster)
+      incidence.forEach(m, v, [&](Index i) {
+        if (listed[i]) return;
+        listed[i] = 1;
+        elements.push_back(i);
+      });
+    for (std::size_t k = first; k < elements.size(); ++k) listed[elements[k]] = 0;
     active.push_back(c);
     elementOffsets.push_back(elements.size());
   }
@@ -427,18 +434,23 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance, std::vector<Ind
     const std::vector<Index>& cluster = clusters[active[a]];
     std::vector<Vec3> start;
     for (Index v : cluster) start.push_back(m.nodes[v]);
-    auto bad = [&]() {
-      return std::count_if(elements.begin() + elementOffsets[a], elements.begin() + elementOffsets[a + 1],
-                           [&](Index i) { return needsRepair(m, i); });
+    // Elements needing repair, counted up to `most` + 1 (a move is refused
+    // as soon as it has more than before: on the torus three moves in four
+    // are, and counting them out was most of the weld).
+    auto badUpTo = [&](std::size_t most) {
+      std::size_t count = 0;
+      for (std::size_t k = elementOffsets[a]; k < elementOffsets[a + 1] && count <= most; ++k)
+        count += needsRepair(m, elements[k]) ? 1 : 0;
+      return count;
     };
-    const auto before = bad();
+    const std::size_t before = badUpTo(elementOffsets[a + 1] - elementOffsets[a]);
     for (std::size_t k = 0; k < cluster.size(); ++k) {  // onto each member's position in turn
       // Chains of close pairs can span far: every member must be near the target.
       bool compact = true;
       for (const Vec3& p : start) compact = compact && squaredLength(p, start[k]) <= 4 * limit;
       if (!compact) continue;
       for (Index v : cluster) m.nodes[v] = start[k];
-      if (bad() <= before)
+      if (badUpTo(before) <= before)
         return static_cast<std::size_t>(
             std::count_if(start.begin(), start.end(), [&](const Vec3& p) { return p != start[k]; }));
     }
