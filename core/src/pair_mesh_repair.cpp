@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 
 #include <tbb/blocked_range.h>
@@ -131,9 +132,12 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
   auto ensureIncidence = [&](const std::vector<Index>& nodes) {
     if (!std::all_of(nodes.begin(), nodes.end(), inRegionNode)) buildIncidenceAround(nodes);
   };
-  auto negativeAround = [&](Index v, double* deficit) {
+  // Elements needing repair around v (and their volume short of zero in
+  // *deficit); once there are more than `most`, the rest are not tested.
+  auto negativeAround = [&](Index v, double* deficit, std::size_t most = std::numeric_limits<std::size_t>::max()) {
     std::size_t count = 0;
     incidence.forEach(m, v, [&](Index i) {
+      if (count > most) return;
       if (needsRepair(m, i)) {
         ++count;
         if (deficit) *deficit -= tetVolume(m, i);
@@ -313,7 +317,9 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
       for (const Vec3& target : targets) {
         m.nodes[v] = target;
         double deficit = 0;
-        const std::size_t count = negativeAround(v, &deficit);
+        // (A target with more than the best so far cannot win: counting
+        // stops there.)
+        const std::size_t count = negativeAround(v, &deficit, bestCount);
         if (count < bestCount || (count == bestCount && deficit < bestDeficit)) {
           best = target;
           bestCount = count;
