@@ -42,21 +42,23 @@ PairMeshBuilder::PairMeshBuilder(const DelaunayVoronoi& dv, const SampleSet& sam
   // between any of the cells of two consecutive corners, or of one corner
   // (the zero-length edges the weld dropped).
   // Per kept cell, the cells welded into it: a run of `welded` (sorted by
-  // the kept cell, in weldedCells' order within a run) that firstWelded
-  // points at, so that a polygon corner's lookup is an array read.
+  // the kept cell) that firstWelded points at, so that a polygon corner's
+  // lookup is an array read.
   std::vector<std::array<Index, 2>> welded = axis->weldedCells;  // {welded, kept}
-  std::stable_sort(welded.begin(), welded.end(),
-                   [](const std::array<Index, 2>& a, const std::array<Index, 2>& b) { return a[1] < b[1]; });
+  std::sort(welded.begin(), welded.end(),
+            [](const std::array<Index, 2>& a, const std::array<Index, 2>& b) { return a[1] < b[1]; });
   std::vector<Index> firstWelded(dv.cellCount(), kNoIndex);
   for (std::size_t k = welded.size(); k-- > 0;)
     if (welded[k][1] < firstWelded.size()) firstWelded[welded[k][1]] = static_cast<Index>(k);
   auto forEachCell = [&](Index c, auto&& f) {
     if (c >= dv.cellCount()) return;  // (kNoIndex: a sample vertex)
     f(c);
-    for (Index k = firstWelded[c]; k != kNoIndex && k < welded.size() && welded[k][1] == c; ++k) f(welded[k][0]);
+    for (Index k = firstWelded[c]; k != kNoIndex && k < welded.size() && welded[k][1] == c; ++k)
+      if (welded[k][0] < dv.cellCount()) f(welded[k][0]);
   };
   // Polygons are marked in parallel: bits are set with atomic ORs, so the
-  // masks do not depend on the order.
+  // masks do not depend on the order (GCC/Clang builtins on the plain bytes:
+  // C++17 has no atomic_ref, and the plain reads come after the join).
   auto markVoronoiEdge = [&](Index x, Index y) {
     if (x == y || x >= dv.cellCount() || y >= dv.cellCount()) return;
     const Cell_handle cx = dv.cell(x), cy = dv.cell(y);
@@ -452,7 +454,7 @@ void PairMeshBuilder::edge(Vertex_handle va, Vertex_handle vb, std::vector<Cell_
   for (std::size_t i = 0; i < k; ++i) {  // boundary edge: Edge-Edge per inner Voronoi edge
     const Index ci = DelaunayVoronoi::cellId(ring[i]), cj = DelaunayVoronoi::cellId(ring[(i + 1) % k]);
     if (!isInner(ci) || !isInner(cj)) continue;
-    const bool linked = (sheetFacets_[ci] >> ring[i]->index(ring[(i + 1) % k]) & 1) != 0;
+    const bool linked = ((sheetFacets_[ci] >> ring[i]->index(ring[(i + 1) % k])) & 1) != 0;
     add(out, PairElementType::EdgeEdge, {a, b, nodeOfCell_[ci], nodeOfCell_[cj]}, {ci, cj}, {a, b, kNoIndex}, linked);
     ++out.counts.edgeEdge;
   }

@@ -89,7 +89,9 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
                   flagged.end());
     return flagged.size();
   };
-  auto flagAll = [&]() {
+  // Flags every element (unless the caller's flags are current) and lists
+  // the flagged ones.
+  auto flagAndListAll = [&]() {
     if (!flagsCurrent)
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.tets.size()), [&](const auto& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) badFlag[i] = needsRepair(m, i) ? 1 : 0;
@@ -251,7 +253,7 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
     return nearestValidNodePosition(m.nodes, v, elements, 0.5 * std::sqrt(far));
   };
 
-  std::size_t bad = flagAll();
+  std::size_t bad = flagAndListAll();
   if (bad == 0) return 0;  // before the incidence: on CTC-01 a 0.05 s pass
   buildIncidenceAround({});
   for (int round = 0; round < rounds && bad > 0; ++round) {
@@ -449,7 +451,7 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance, std::vector<Ind
         count += needsRepair(m, elements[k]) ? 1 : 0;
       return count;
     };
-    const std::size_t before = badUpTo(elementOffsets[a + 1] - elementOffsets[a]);
+    const std::size_t before = badUpTo(std::numeric_limits<std::size_t>::max());
     for (std::size_t k = 0; k < cluster.size(); ++k) {  // onto each member's position in turn
       // Chains of close pairs can span far: every member must be near the target.
       bool compact = true;
@@ -509,10 +511,11 @@ std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, const 
   bool flagsCurrent = false;
   if (options.countInvertedBefore) {
     needsRepairFlag.assign(m.tets.size(), 0);
-    m.counts.invertedBeforeRepair = countElements(m.tets.size(), [&](std::size_t i) {
-      needsRepairFlag[i] = needsRepair(m, i) ? 1 : 0;
-      return needsRepairFlag[i] != 0 && isInverted(m, i);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.tets.size()), [&](const auto& r) {
+      for (std::size_t i = r.begin(); i != r.end(); ++i) needsRepairFlag[i] = needsRepair(m, i) ? 1 : 0;
     });
+    m.counts.invertedBeforeRepair =
+        countElements(m.tets.size(), [&](std::size_t i) { return needsRepairFlag[i] != 0 && isInverted(m, i); });
     flagsCurrent = true;
   }
   if (options.weldCloseNodes) {

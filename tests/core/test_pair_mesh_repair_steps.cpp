@@ -729,9 +729,11 @@ TEST(PairMeshRepairSteps, RepairFinishesOnHostileLabels) {
 // being tested again. The repair must end exactly as when the flags are
 // computed afresh after the weld (the count switched off), and the count
 // must be that of the mesh as built. On these ellipsoid clouds the weld
-// changes whether some elements need repair (seeds 1 and 3 at 4000
-// points, 2026-12-07); with the changed elements' flags left as they were
-// before the weld, the meshes differ.
+// changes whether some elements need repair; with the changed elements'
+// flags left as they were before the weld, the meshes differ (seed 3 at
+// 4000 points, 2026-12-07). Both sides run the same node moves, so this
+// does not check those against the code before; byte-identical outputs on
+// the bundled and public parts did.
 TEST(PairMeshRepairSteps, CountBeforeRepairLeavesTheRepairAsItWas) {
   const Vec3 axes{1.0, 0.7, 0.45};
   auto inside = [&](const Vec3& p) {
@@ -752,8 +754,9 @@ TEST(PairMeshRepairSteps, CountBeforeRepairLeavesTheRepairAsItWas) {
       RepairOptions withoutCount;
       withoutCount.countInvertedBefore = false;
       std::size_t needingCounted = 0, needingFresh = 0;
-      EXPECT_EQ(repairFlippedElements(counted, dv, {}, &needingCounted),
-                repairFlippedElements(fresh, dv, withoutCount, &needingFresh));
+      const std::size_t leftCounted = repairFlippedElements(counted, dv, {}, &needingCounted);
+      const std::size_t leftFresh = repairFlippedElements(fresh, dv, withoutCount, &needingFresh);
+      EXPECT_EQ(leftCounted, leftFresh);
       EXPECT_EQ(needingCounted, needingFresh);
       EXPECT_EQ(counted.counts.invertedBeforeRepair, invertedAsBuilt);
       EXPECT_EQ(counted.counts.weldedNodes, fresh.counts.weldedNodes);
