@@ -61,13 +61,12 @@ PairMeshBuilder::PairMeshBuilder(const DelaunayVoronoi& dv, const SampleSet& sam
   // C++17 has no atomic_ref, and the plain reads come after the join).
   auto markVoronoiEdge = [&](Index x, Index y) {
     if (x == y || x >= dv.cellCount() || y >= dv.cellCount()) return;
-    const Cell_handle cx = dv.cell(x), cy = dv.cell(y);
-    for (int i = 0; i < 4; ++i)
-      if (cx->neighbor(i) == cy) {
+    for (int i = 0; i < 4; ++i) {
+      if (dv.cellNeighbor(x, i) == y)
         __atomic_fetch_or(&sheetFacets_[x], static_cast<std::uint8_t>(1u << i), __ATOMIC_RELAXED);
-        __atomic_fetch_or(&sheetFacets_[y], static_cast<std::uint8_t>(1u << cy->index(cx)), __ATOMIC_RELAXED);
-        return;
-      }
+      if (dv.cellNeighbor(y, i) == x)
+        __atomic_fetch_or(&sheetFacets_[y], static_cast<std::uint8_t>(1u << i), __ATOMIC_RELAXED);
+    }
   };
   for (std::size_t k = 0; k < welded.size();) {
     std::vector<Index> cells;

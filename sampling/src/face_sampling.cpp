@@ -182,7 +182,6 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
     std::mt19937_64 rng(seed * 1000003ull + static_cast<unsigned>(f));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::vector<Dart> batch;
-    bool keptInBatch = false;
     double weightBefore = 0, dartsBefore = 0;
     std::size_t clearSeen = 0, clearKept = 0;  // in the last batch: darts clear of the samples before it, and kept clear by it
     // A dart is kept iff, in the order thrown, it passes the area-element
@@ -221,7 +220,7 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
     // Clear of the darts kept earlier in the batch: the builder holds them
     // too (with their own radii), and every sample it held before the batch
     // is already cleared, so asking it again gives one-at-a-time's answer.
-    auto clearOfBatch = [&](const Dart& d) { return !keptInBatch || builder.isClear(d.p, d.reach); };
+    auto clearOfBatch = [&](const Dart& d) { return builder.isClear(d.p, d.reach); };
     auto throwDarts = [&](const Tile& leaf, double radius) {
       weightBefore += weight(leaf, radius);
       const double dartsAfter = std::floor(totalDarts * weightBefore / weightSum);
@@ -258,7 +257,6 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
                               }
                             }
                           });
-        keptInBatch = false;
         clearSeen = clearKept = 0;
         for (std::size_t i = 0; i < n; ++i) {
           Dart& d = batch[i];
@@ -273,7 +271,6 @@ void sampleFaceInteriors(SamplingContext& ctx, SampleBuilder& builder, unsigned 
           ++clearKept;
           if (d.state == DartState::Clear) classify(evaluators.local(), d);
           if (d.state != DartState::Inside) continue;
-          keptInBatch = true;
           ctx.recordFaceUv(builder.add(d.p, SampleKind::Face, f, d.local), gp_Pnt2d(d.u, d.v));
         }
       }
