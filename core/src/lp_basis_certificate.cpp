@@ -213,14 +213,29 @@ std::optional<CertifiedVertex> check(const std::vector<LinearConstraint>& constr
 std::optional<CertifiedVertex> exactSimplex(const std::vector<LinearConstraint>& constraints,
                                             std::array<std::size_t, 4> basis, const std::array<double, 4>& objective,
                                             int maxPivots) {
+  // Per basis, the signs are first asked of intervals (one rounding-mode
+  // switch for all), and computed exactly only where those cannot tell:
+  // at the degenerate vertices that bring a basis here, a few constraints
+  // of ~20.
+  std::vector<Sign> quickSign(constraints.size());
   for (int pivots = 0; pivots <= maxPivots; ++pivots) {
     const Basis<Exact> b(constraints, basis, objective);
     if (b.signD == Sign::Zero) return std::nullopt;
     const bool flip = b.signD == Sign::Negative;  // multiply the scaled values by sign D
     auto normalized = [flip](Exact v) { return flip ? Exact(0) - v : v; };
+    std::optional<Basis<Interval>> quick;
+    {
+      [[maybe_unused]] const RoundingFor<Interval> rounding;
+      quick.emplace(constraints, basis, objective);
+      for (std::size_t i = 0; i < constraints.size(); ++i)
+        quickSign[i] = inBasis(basis, i) ? Sign::Zero : quick->slackSign(constraints[i]);
+    }
+    auto slackSign = [&](std::size_t i) {
+      return quickSign[i] != Sign::Unknown ? quickSign[i] : b.slackSign(constraints[i]);
+    };
     std::size_t violated = constraints.size();
     for (std::size_t i = 0; i < constraints.size() && violated == constraints.size(); ++i)
-      if (!inBasis(basis, i) && b.slackSign(constraints[i]) == Sign::Negative) violated = i;
+      if (!inBasis(basis, i) && slackSign(i) == Sign::Negative) violated = i;
     int leaving = -1;
     for (int i = 0; i < 4; ++i)
       if (b.multiplierSign(i) == Sign::Negative && (leaving < 0 || basis[i] < basis[leaving])) leaving = i;
@@ -239,10 +254,21 @@ std::optional<CertifiedVertex> exactSimplex(const std::vector<LinearConstraint>&
       // room / rate.
       std::array<Exact, 4> direction;
       for (int i = 0; i < 4; ++i) direction[i] = Exact(0) - b.adj[i][leaving];
+      {  // quickSign now: the rates' signs (sign D times a . -A e_leaving)
+        [[maybe_unused]] const RoundingFor<Interval> rounding;
+        std::array<Interval, 4> quickDirection;
+        for (int i = 0; i < 4; ++i) quickDirection[i] = Interval(0) - quick->adj[i][leaving];
+        for (std::size_t i = 0; i < constraints.size(); ++i)
+          quickSign[i] = inBasis(basis, i) ? Sign::Zero
+                                            : times(signOf(Basis<Interval>::dot(constraints[i], quickDirection)),
+                                                    quick->signD);
+      }
       std::size_t entering = constraints.size();
       Exact bestRoom, bestRate;
       for (std::size_t i = 0; i < constraints.size(); ++i) {
         if (inBasis(basis, i)) continue;
+        const Sign rateSign = quickSign[i];
+        if (rateSign == Sign::Negative || rateSign == Sign::Zero) continue;
         const Exact rate = normalized(Basis<Exact>::dot(constraints[i], direction));
         if (rate.sign() != CGAL::POSITIVE) continue;
         const Exact room = normalized(b.scaledSlack(constraints[i]));
