@@ -257,6 +257,67 @@ TEST(PairMesh, GridBoxWithCosphericalSamplesStaysValid) {
   }, 1.0, 1e-9);
 }
 
+TEST(PairMesh, VoronoiNodesWithinTheWeldToleranceShareOnePosition) {
+  // The build welds Voronoi nodes within 1e-8 of the samples' extent
+  // (per coordinate) to the first such node: a grid box's cospherical
+  // samples give many. Checked against the rule, not the grid it uses:
+  // every node stays within the tolerance of its circumcentre; a node that
+  // moved sits on an earlier node that did not; the positions left are
+  // pairwise farther apart than the tolerance (a lookup that missed a
+  // neighbour would leave two within it).
+  // Moved off the origin and jittered by a fraction of the tolerance, so
+  // that the centres that coincide exactly spread over neighbouring grid
+  // cells of the weld (rounding alone keeps them in one).
+  SampleSet s = gridBoxSamples(10, 0.1);
+  const Vec3 offset{0.1234567, 0.7654321, 0.3141593};
+  std::uint64_t state = 12345;
+  auto jitter = [&state]() {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5) * 4e-9;
+  };
+  for (Vec3& p : s.points)
+    for (int k = 0; k < 3; ++k) p[k] += offset[k] + jitter();
+  DelaunayVoronoi dv(s.points);
+  const PairMesh m = buildPairMesh(dv, s, exactLabels(dv, [&](const Vec3& p) {
+    for (int k = 0; k < 3; ++k)
+      if (!(p[k] > offset[k] && p[k] < offset[k] + 1)) return false;
+    return true;
+  }), nullptr, /*repair=*/false);
+  Vec3 lo = s.points[0], hi = s.points[0];
+  for (const Vec3& p : s.points)
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  const double tolerance =
+      1e-8 * std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                       (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  auto within = [tolerance](const Vec3& a, const Vec3& b) {
+    return std::abs(a[0] - b[0]) <= tolerance && std::abs(a[1] - b[1]) <= tolerance &&
+           std::abs(a[2] - b[2]) <= tolerance;
+  };
+  std::map<Vec3, Index> firstAt;  // position -> first node there
+  std::size_t moved = 0;
+  for (Index n = static_cast<Index>(m.sampleNodes); n < m.nodes.size(); ++n) {
+    const Vec3 centre = dv.circumcenter(m.nodeCell[n]);
+    ASSERT_TRUE(within(m.nodes[n], centre)) << "node " << n;
+    const auto [at, first] = firstAt.emplace(m.nodes[n], n);
+    if (m.nodes[n] == centre) continue;  // (possibly on an earlier node: exactly coincident centres)
+    ++moved;
+    ASSERT_FALSE(first) << "node " << n << " moved to no earlier node";
+    EXPECT_EQ(m.nodes[at->second], dv.circumcenter(m.nodeCell[at->second])) << "node " << n;
+  }
+  EXPECT_GT(moved, 100u) << "the grid box should weld many nodes";
+  EXPECT_EQ(m.counts.weldedNodes, moved);
+  std::vector<Vec3> kept;
+  for (const auto& [p, n] : firstAt) kept.push_back(p);  // sorted by x first
+  std::size_t tooClose = 0;
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    for (std::size_t j = i + 1; j < kept.size() && kept[j][0] - kept[i][0] <= tolerance; ++j)
+      tooClose += within(kept[i], kept[j]) ? 1 : 0;
+  EXPECT_EQ(tooClose, 0u);
+}
+
 TEST(PairMesh, BuildGivesEveryEdgeItsElementsOnceOnAnyNumberOfThreads) {
   // The build runs in parallel blocks of 8,192 cells, each edge from the
   // block of its owner (the inner cell of lowest id around it). 12 k torus
