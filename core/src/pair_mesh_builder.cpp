@@ -571,8 +571,19 @@ void PairMeshBuilder::weldNearlyCoincidentVoronoiNodes() {
     for (std::size_t slot = slotHash(key) & mask;; slot = (slot + 1) & mask)
       if (nodeIn[slot] == kNoIndex || cells[slot] == c) return slot;
   };
+  // A node too far out for the grid's integer cells (|p| >= 2^52 tolerances,
+  // or not finite: the centre of a nearly flat cell relabelled inner) is
+  // left as it is: its coordinates' rounding is as large as the tolerance
+  // there, and the cast to integers and the steps to the neighbours would
+  // overflow.
+  auto onGrid = [tolerance](const Vec3& p) {
+    constexpr double limit = 4503599627370496.0;  // 2^52
+    return std::abs(p[0]) / tolerance < limit && std::abs(p[1]) / tolerance < limit &&
+           std::abs(p[2]) / tolerance < limit;
+  };
   for (Index n = static_cast<Index>(m.sampleNodes); n < m.nodes.size(); ++n) {
     Vec3& p = m.nodes[n];
+    if (!onGrid(p)) continue;
     const Cell c = cellOf(p);
     const std::uint64_t key = keyOf(c);
     bool welded = false;
