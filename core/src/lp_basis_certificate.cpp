@@ -217,7 +217,7 @@ std::optional<CertifiedVertex> exactSimplex(const std::vector<LinearConstraint>&
   // switch for all), and computed exactly only where those cannot tell:
   // at the degenerate vertices that bring a basis here, a few constraints
   // of ~20.
-  std::vector<Sign> quickSign(constraints.size());
+  std::vector<Sign> quickSlack(constraints.size()), quickRate(constraints.size());
   for (int pivots = 0; pivots <= maxPivots; ++pivots) {
     const Basis<Exact> b(constraints, basis, objective);
     if (b.signD == Sign::Zero) return std::nullopt;
@@ -228,10 +228,10 @@ std::optional<CertifiedVertex> exactSimplex(const std::vector<LinearConstraint>&
       [[maybe_unused]] const RoundingFor<Interval> rounding;
       quick.emplace(constraints, basis, objective);
       for (std::size_t i = 0; i < constraints.size(); ++i)
-        quickSign[i] = inBasis(basis, i) ? Sign::Zero : quick->slackSign(constraints[i]);
+        quickSlack[i] = inBasis(basis, i) ? Sign::Zero : quick->slackSign(constraints[i]);
     }
     auto slackSign = [&](std::size_t i) {
-      return quickSign[i] != Sign::Unknown ? quickSign[i] : b.slackSign(constraints[i]);
+      return quickSlack[i] != Sign::Unknown ? quickSlack[i] : b.slackSign(constraints[i]);
     };
     std::size_t violated = constraints.size();
     for (std::size_t i = 0; i < constraints.size() && violated == constraints.size(); ++i)
@@ -254,12 +254,12 @@ std::optional<CertifiedVertex> exactSimplex(const std::vector<LinearConstraint>&
       // room / rate.
       std::array<Exact, 4> direction;
       for (int i = 0; i < 4; ++i) direction[i] = Exact(0) - b.adj[i][leaving];
-      {  // quickSign now: the rates' signs (sign D times a . -A e_leaving)
+      {  // the rates' signs: sign D times a . -A e_leaving
         [[maybe_unused]] const RoundingFor<Interval> rounding;
         std::array<Interval, 4> quickDirection;
         for (int i = 0; i < 4; ++i) quickDirection[i] = Interval(0) - quick->adj[i][leaving];
         for (std::size_t i = 0; i < constraints.size(); ++i)
-          quickSign[i] = inBasis(basis, i) ? Sign::Zero
+          quickRate[i] = inBasis(basis, i) ? Sign::Zero
                                             : times(signOf(Basis<Interval>::dot(constraints[i], quickDirection)),
                                                     quick->signD);
       }
@@ -267,8 +267,7 @@ std::optional<CertifiedVertex> exactSimplex(const std::vector<LinearConstraint>&
       Exact bestRoom, bestRate;
       for (std::size_t i = 0; i < constraints.size(); ++i) {
         if (inBasis(basis, i)) continue;
-        const Sign rateSign = quickSign[i];
-        if (rateSign == Sign::Negative || rateSign == Sign::Zero) continue;
+        if (quickRate[i] == Sign::Negative || quickRate[i] == Sign::Zero) continue;
         const Exact rate = normalized(Basis<Exact>::dot(constraints[i], direction));
         if (rate.sign() != CGAL::POSITIVE) continue;
         const Exact room = normalized(b.scaledSlack(constraints[i]));
