@@ -18,6 +18,7 @@
 #include "cadmedial/medial.hpp"
 #include "cadmedial/pair_mesh.hpp"
 #include "mesh_sets.hpp"
+#include "point_box.hpp"
 #include "synthetic_samples.hpp"
 
 using namespace cadmedial;
@@ -286,15 +287,7 @@ TEST(PairMesh, VoronoiNodesWithinTheWeldToleranceShareOnePosition) {
       if (!(p[k] > offset[k] && p[k] < offset[k] + 1)) return false;
     return true;
   }), nullptr, /*repair=*/false);
-  Vec3 lo = s.points[0], hi = s.points[0];
-  for (const Vec3& p : s.points)
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], p[k]);
-      hi[k] = std::max(hi[k], p[k]);
-    }
-  const double tolerance =
-      1e-8 * std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                       (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  const double tolerance = 1e-8 * boxOf(s.points.data(), s.points.data() + s.points.size()).diagonal();
   auto within = [tolerance](const Vec3& a, const Vec3& b) {
     return std::abs(a[0] - b[0]) <= tolerance && std::abs(a[1] - b[1]) <= tolerance &&
            std::abs(a[2] - b[2]) <= tolerance;
