@@ -359,9 +359,12 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
 // leaves no more elements needing repair around it than before (on curved
 // parts close nodes are often genuinely distinct, and then the move is
 // refused). Returns the number of nodes moved.
-// The elements of the clusters moved go to `changed` (unsorted, perhaps
-// repeated), when given.
-std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance, std::vector<Index>* changed) {
+// `needsRepairFlags`, when given, holds every element's needsRepair on entry
+// and is kept so: the count before a move is read from it, and the pass
+// that accepts a move (which has tested every element of the cluster)
+// writes its results (on the lever and torus, testing the moved clusters'
+// elements again afterwards was a fifth of the weld).
+std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance, std::vector<std::uint8_t>* needsRepairFlags) {
   if (!(tolerance > 0)) return 0;
   const std::size_t n = m.nodes.size();
   // Clusters: nodes joined through elements by pairs closer than tolerance.
@@ -437,38 +440,50 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance, std::vector<Ind
     elementOffsets.push_back(elements.size());
   }
   // Moves a cluster onto one member's position, or leaves it; returns the
-  // number of members moved. It reads the positions of its elements' nodes.
+  // number of members moved. It reads the positions of its elements' nodes
+  // (and writes their flags, when kept).
   auto decide = [&](std::size_t a) -> std::size_t {
     const std::vector<Index>& cluster = clusters[active[a]];
+    const std::size_t firstElement = elementOffsets[a], elementCount = elementOffsets[a + 1] - firstElement;
     std::vector<Vec3> start;
     for (Index v : cluster) start.push_back(m.nodes[v]);
     // Elements needing repair, counted up to `most` + 1 (a move is refused
     // as soon as it has more than before: on the torus three moves in four
-    // are, and counting them out was most of the weld).
+    // are, and counting them out was most of the weld); each one's answer
+    // goes to `tested` (complete when the count is at most `most`).
+    std::vector<std::uint8_t> tested(elementCount);
     auto badUpTo = [&](std::size_t most) {
       std::size_t count = 0;
-      for (std::size_t k = elementOffsets[a]; k < elementOffsets[a + 1] && count <= most; ++k)
-        count += needsRepair(m, elements[k]) ? 1 : 0;
+      for (std::size_t k = 0; k < elementCount && count <= most; ++k)
+        count += tested[k] = needsRepair(m, elements[firstElement + k]) ? 1 : 0;
       return count;
     };
-    const std::size_t before = badUpTo(std::numeric_limits<std::size_t>::max());
+    std::size_t before = 0;
+    if (needsRepairFlags)
+      for (std::size_t k = 0; k < elementCount; ++k) before += (*needsRepairFlags)[elements[firstElement + k]];
+    else
+      before = badUpTo(std::numeric_limits<std::size_t>::max());
     for (std::size_t k = 0; k < cluster.size(); ++k) {  // onto each member's position in turn
       // Chains of close pairs can span far: every member must be near the target.
       bool compact = true;
       for (const Vec3& p : start) compact = compact && squaredLength(p, start[k]) <= 4 * limit;
       if (!compact) continue;
       for (Index v : cluster) m.nodes[v] = start[k];
-      if (badUpTo(before) <= before)
+      if (badUpTo(before) <= before) {
+        if (needsRepairFlags)
+          for (std::size_t e = 0; e < elementCount; ++e) (*needsRepairFlags)[elements[firstElement + e]] = tested[e];
         return static_cast<std::size_t>(
             std::count_if(start.begin(), start.end(), [&](const Vec3& p) { return p != start[k]; }));
+      }
     }
     for (std::size_t k = 0; k < cluster.size(); ++k) m.nodes[cluster[k]] = start[k];
     return 0;
   };
   // Decided as in one pass in order, in waves: a cluster goes in the wave
   // after the last one holding an earlier cluster it shares an element
-  // with, so that no two of a wave share one and each sees every earlier
-  // neighbour decided; a wave's clusters are decided in parallel.
+  // with, so that no two of a wave share one (nor write one's flag) and
+  // each sees every earlier neighbour decided; a wave's clusters are
+  // decided in parallel.
   std::vector<int> waveOfElement(m.tets.size(), -1);
   std::vector<std::vector<std::size_t>> waves;
   for (std::size_t a = 0; a < active.size(); ++a) {
@@ -480,23 +495,14 @@ std::size_t weldCloseVoronoiNodes(PairMesh& m, double tolerance, std::vector<Ind
     waves[wave].push_back(a);
   }
   std::size_t welded = 0;
-  std::vector<std::uint8_t> movedCluster(active.size(), 0);
   for (const std::vector<std::size_t>& wave : waves)
     welded += tbb::parallel_reduce(
         tbb::blocked_range<std::size_t>(0, wave.size()), std::size_t(0),
         [&](const tbb::blocked_range<std::size_t>& r, std::size_t sum) {
-          for (std::size_t k = r.begin(); k != r.end(); ++k) {
-            const std::size_t members = decide(wave[k]);
-            movedCluster[wave[k]] = members > 0 ? 1 : 0;
-            sum += members;
-          }
+          for (std::size_t k = r.begin(); k != r.end(); ++k) sum += decide(wave[k]);
           return sum;
         },
         std::plus<>());
-  if (changed)
-    for (std::size_t a = 0; a < active.size(); ++a)
-      if (movedCluster[a])
-        changed->insert(changed->end(), elements.begin() + elementOffsets[a], elements.begin() + elementOffsets[a + 1]);
   return welded;
 }
 
@@ -506,8 +512,8 @@ std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, const 
                                   std::size_t* needingRepairLeft) {
   std::vector<std::uint8_t> moved, needsRepairFlag;
   // The count before repair comes from the pass that flags the elements
-  // needing repair (inverted ones are among them); the weld then flags
-  // again the elements it changed, so the first round need not test all.
+  // needing repair (inverted ones are among them); the weld keeps the flags
+  // current, so the first round need not test all.
   bool flagsCurrent = false;
   if (options.countInvertedBefore) {
     needsRepairFlag.assign(m.tets.size(), 0);
@@ -518,11 +524,8 @@ std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, const 
         countElements(m.tets.size(), [&](std::size_t i) { return needsRepairFlag[i] != 0 && isInverted(m, i); });
     flagsCurrent = true;
   }
-  if (options.weldCloseNodes) {
-    std::vector<Index> changed;
-    m.counts.weldedNodes += weldCloseVoronoiNodes(m, m.spacing / 200, flagsCurrent ? &changed : nullptr);
-    for (Index i : changed) needsRepairFlag[i] = needsRepair(m, i) ? 1 : 0;
-  }
+  if (options.weldCloseNodes)
+    m.counts.weldedNodes += weldCloseVoronoiNodes(m, m.spacing / 200, flagsCurrent ? &needsRepairFlag : nullptr);
   std::size_t needingRepair = moveVoronoiNodes(m, dv, options.rounds, moved, needsRepairFlag, flagsCurrent);
   if (needingRepair > 0) {
     std::vector<std::size_t> flagged;  // the negative elements are among them
