@@ -63,7 +63,10 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
   watch.restart();
   if (repair) {
     std::size_t needingRepair = 0;
-    std::size_t inverted = repairFlippedElements(mesh, dv, {}, &needingRepair);
+    // Every element's elementNeedsRepair in `mesh` as repaired: a trial
+    // starts from them (a pass over every element less per trial).
+    std::vector<std::uint8_t> flags;
+    std::size_t inverted = repairFlippedElements(mesh, dv, {}, &needingRepair, &flags);
     // Last resort, up to ten passes: the boundary cells whose Voronoi
     // nodes the repair could not place go outer or, failing that, the outer
     // cells across the inverted elements' boundary facets go inner; first
@@ -100,15 +103,17 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
       std::vector<std::uint8_t> trialInner = inner;
       for (Index c : cells) trialInner[c] = goingInner ? 1 : 0;
       PairMesh trial = mesh;
-      if (!builder.relabel(trial, trialInner, cells)) {
+      std::vector<std::uint8_t> trialFlags = flags;
+      if (!builder.relabel(trial, trialInner, cells, &trialFlags)) {
         trial = builder.build(trialInner);
         keepRepairedPositions(mesh, trial);
+        trialFlags.clear();  // the repair flags all elements
       }
       trial.counts.movedNodes = trial.counts.retriangulatedPolygons = 0;
       RepairOptions again;
       again.weldCloseNodes = again.countInvertedBefore = false;
       std::size_t trialNeedingRepair = 0;
-      const std::size_t trialInverted = repairFlippedElements(trial, dv, again, &trialNeedingRepair);
+      const std::size_t trialInverted = repairFlippedElements(trial, dv, again, &trialNeedingRepair, &trialFlags);
       // Fewer inverted, or as many with less volume inverted (a fold pushed
       // to a smaller cell, which the next pass may remove): the pair (count,
       // volume) only decreases, so the passes cannot cycle.
@@ -132,6 +137,7 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
       c.retriangulatedPolygons += mesh.counts.retriangulatedPolygons;
       trial.seconds = mesh.seconds;
       mesh = std::move(trial);
+      flags = std::move(trialFlags);
       inner = std::move(trialInner);
       inverted = trialInverted;
       invertedVolumeNow = trialInvertedVolume;

@@ -1,5 +1,6 @@
 #include "pair_mesh_builder.hpp"
 #include "pair_mesh_edit.hpp"
+#include "pair_mesh_element_checks.hpp"
 #include "point_box.hpp"
 
 #include <algorithm>
@@ -121,8 +122,11 @@ PairMesh PairMeshBuilder::build(const std::vector<std::uint8_t>& inner) {
   return m;
 }
 
-bool PairMeshBuilder::relabel(PairMesh& mesh, const std::vector<std::uint8_t>& after, const std::vector<Index>& cells) {
+bool PairMeshBuilder::relabel(PairMesh& mesh, const std::vector<std::uint8_t>& after, const std::vector<Index>& cells,
+                              std::vector<std::uint8_t>* needsRepairFlags) {
   if (after.size() != dv_.cellCount()) throw std::invalid_argument("pair-mesh: one inner label per cell needed");
+  if (needsRepairFlags && needsRepairFlags->size() != mesh.size())
+    throw std::invalid_argument("pair-mesh: one repair flag per element needed");
   if (cells.empty() || dv_.dimension() != 3) return true;
   // Inner before: the cells with a Voronoi node in the mesh.
   std::vector<Index> nodeBefore(dv_.cellCount(), kNoIndex);
@@ -263,7 +267,8 @@ bool PairMeshBuilder::relabel(PairMesh& mesh, const std::vector<std::uint8_t>& a
     }
     dropElement[i] = drop ? 1 : 0;
   }
-  removeElements(mesh, dropElement);
+  removeElements(mesh, dropElement, needsRepairFlags);
+  const std::size_t keptElements = mesh.size();
 
   // In: the same edges' elements and the new boundary facets' Vertex-Face
   // elements under the new labels, on the nodes where they are; an added
@@ -308,6 +313,11 @@ bool PairMeshBuilder::relabel(PairMesh& mesh, const std::vector<std::uint8_t>& a
   // by cell id.)
   removeNodes(mesh, dropNode);
   recountElements(mesh);
+  if (needsRepairFlags) {
+    needsRepairFlags->resize(mesh.size());
+    for (std::size_t i = keptElements; i < mesh.size(); ++i)
+      (*needsRepairFlags)[i] = elementNeedsRepair(mesh.nodes, mesh.tets[i]) ? 1 : 0;
+  }
   PairMeshCounts& k = mesh.counts;
   k.splitEdges = splitNodeCount(mesh);
   for (Index c : cells) gone[c] ? --k.innerCells : ++k.innerCells;
@@ -354,11 +364,15 @@ void PairMeshBuilder::elements() {
     total += edgeParts[b].size() + faceParts[b].size();
     triangles += faceParts[b].boundaryTriangles.size();
   }
-  m.tets.reserve(total);
-  m.type.reserve(total);
-  m.medialSimplex.reserve(total);
-  m.boundarySimplex.reserve(total);
-  m.onSheets.reserve(total);
+  // Room for the elements the repair's edge splits add (a few per split),
+  // so that they do not move the whole mesh to grow it (on the lever,
+  // moving 418 k elements to fresh pages was most of its 8 splits' time).
+  const std::size_t room = total + total / 128 + 1024;
+  m.tets.reserve(room);
+  m.type.reserve(room);
+  m.medialSimplex.reserve(room);
+  m.boundarySimplex.reserve(room);
+  m.onSheets.reserve(room);
   m.boundaryTriangles.reserve(triangles);
   auto append = [&m](const PairMesh& part) {
     m.tets.insert(m.tets.end(), part.tets.begin(), part.tets.end());

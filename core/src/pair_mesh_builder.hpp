@@ -41,7 +41,11 @@ class PairMeshBuilder {
   // untouched, when a split to undo is of an edge split twice (its elements
   // could no longer be told apart): the caller rebuilds instead. Throws
   // std::invalid_argument unless exactly the listed cells change side.
-  bool relabel(PairMesh& mesh, const std::vector<std::uint8_t>& after, const std::vector<Index>& cells);
+  // needsRepairFlags (optional, one per element of `mesh`: its
+  // elementNeedsRepair) is kept so: the removed elements' entries go, the
+  // new elements get theirs (the kept ones keep their nodes' positions).
+  bool relabel(PairMesh& mesh, const std::vector<std::uint8_t>& after, const std::vector<Index>& cells,
+               std::vector<std::uint8_t>* needsRepairFlags = nullptr);
 
  private:
   using Cell_handle = DelaunayVoronoi::Cell_handle;

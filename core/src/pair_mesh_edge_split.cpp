@@ -21,6 +21,7 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <stdexcept>
 #include <unordered_map>
 
 #include "cadmedial/edge_table.hpp"
@@ -92,7 +93,8 @@ void addToScore(Score& s, const std::vector<Vec3>& nodes, const std::array<Index
 
 class EdgeSplitter {
  public:
-  EdgeSplitter(PairMesh& m, const std::vector<std::size_t>* candidates) : m_(m), candidates_(candidates) {}
+  EdgeSplitter(PairMesh& m, const std::vector<std::size_t>* candidates, std::vector<std::uint8_t>* flags)
+      : m_(m), candidates_(candidates), flags_(flags) {}
 
   std::size_t run() {
     collectEdges();
@@ -474,16 +476,23 @@ class EdgeSplitter {
     m_.onSheets.push_back(linked);
   }
 
-  // Drops the replaced elements and rebuilds the boundary triangles.
+  // Drops the replaced elements and rebuilds the boundary triangles; the
+  // flags, when kept, follow (the new elements are the appended ones).
   void rebuild() {
+    if (flags_) {
+      const std::size_t old = flags_->size();
+      flags_->resize(m_.size());
+      for (std::size_t i = old; i < m_.size(); ++i) (*flags_)[i] = elementNeedsRepair(m_.nodes, m_.tets[i]) ? 1 : 0;
+    }
     std::vector<std::uint8_t> drop(m_.size(), 0);
     for (std::size_t i : removed_) drop[i] = 1;
-    removeElements(m_, drop);
+    removeElements(m_, drop, flags_);
     recountElements(m_);
   }
 
   PairMesh& m_;
   const std::vector<std::size_t>* candidates_;  // optional: where the negative elements are
+  std::vector<std::uint8_t>* flags_;            // optional: elementNeedsRepair per element
   std::map<std::uint64_t, std::vector<std::size_t>> edges_;  // ordered: the same splits on every run
   std::vector<std::uint8_t> edgeEnd_;  // per node: an end of one of edges_
   std::vector<BoundaryPolygon> polygons_;
@@ -500,8 +509,11 @@ class EdgeSplitter {
 
 }  // namespace
 
-std::size_t splitBoundaryEdges(PairMesh& m, const std::vector<std::size_t>* candidates) {
-  return EdgeSplitter(m, candidates).run();
+std::size_t splitBoundaryEdges(PairMesh& m, const std::vector<std::size_t>* candidates,
+                               std::vector<std::uint8_t>* needsRepairFlags) {
+  if (needsRepairFlags && needsRepairFlags->size() != m.size())
+    throw std::invalid_argument("pair-mesh edge split: one repair flag per element needed");
+  return EdgeSplitter(m, candidates, needsRepairFlags).run();
 }
 
 }  // namespace cadmedial

@@ -24,8 +24,11 @@ std::vector<Index> keepUndropped(const std::vector<std::uint8_t>& drop, Vectors&
 
 }  // namespace
 
-void removeElements(PairMesh& m, const std::vector<std::uint8_t>& drop) {
-  keepUndropped(drop, m.tets, m.type, m.medialSimplex, m.boundarySimplex, m.onSheets);
+void removeElements(PairMesh& m, const std::vector<std::uint8_t>& drop, std::vector<std::uint8_t>* perElement) {
+  if (perElement)
+    keepUndropped(drop, m.tets, m.type, m.medialSimplex, m.boundarySimplex, m.onSheets, *perElement);
+  else
+    keepUndropped(drop, m.tets, m.type, m.medialSimplex, m.boundarySimplex, m.onSheets);
 }
 
 void removeNodes(PairMesh& m, const std::vector<std::uint8_t>& drop) {

@@ -9,8 +9,11 @@
 
 namespace cadmedial {
 
-// Removes the elements with drop[i] != 0, keeping the others in order.
-void removeElements(PairMesh& mesh, const std::vector<std::uint8_t>& drop);
+// Removes the elements with drop[i] != 0, keeping the others in order;
+// `perElement` (optional, one entry per element: the repair's flags) loses
+// the same entries.
+void removeElements(PairMesh& mesh, const std::vector<std::uint8_t>& drop,
+                    std::vector<std::uint8_t>* perElement = nullptr);
 
 // Removes the nodes with drop[n] != 0 (no element may use them), keeping the
 // others in order and renumbering the elements' corners.

@@ -559,6 +559,76 @@ TEST(PairMeshRepairSteps, LocalRelabellingUndoesSplitEdges) {
   EXPECT_GT(cascaded, 0u);
 }
 
+// The repair's per-element flags (elementNeedsRepair) are carried through
+// the edge splits and the in-place relabelling instead of tested again on
+// every element; they must stay equal to a fresh test of every element:
+// after a repair that split edges (the knife), and after relabelling cells
+// of it (splits undone, elements dropped and added) and of the knife and a
+// grid box as built (many elements to repair, whose entries must follow the
+// compaction).
+TEST(PairMeshRepairSteps, RepairFlagsFollowSplitsAndRelabelling) {
+  auto mismatches = [](const PairMesh& m, const std::vector<std::uint8_t>& flags) {
+    if (flags.size() != m.size()) return m.size() + 1;
+    std::size_t wrong = 0;
+    for (std::size_t i = 0; i < m.size(); ++i) wrong += flags[i] != (elementNeedsRepair(m.nodes, m.tets[i]) ? 1 : 0);
+    return wrong;
+  };
+  auto flagsOf = [](const PairMesh& m) {
+    std::vector<std::uint8_t> flags(m.size());
+    for (std::size_t i = 0; i < m.size(); ++i) flags[i] = elementNeedsRepair(m.nodes, m.tets[i]) ? 1 : 0;
+    return flags;
+  };
+  {
+    const SampleSet samples = knife();
+    const DelaunayVoronoi dv(samples.points);
+    const std::vector<std::uint8_t> inner = everyFiniteCell(dv);
+    PairMeshBuilder builder(dv, samples, nullptr);
+    PairMesh repaired = builder.build(inner);
+    std::vector<std::uint8_t> flags;
+    repairFlippedElements(repaired, dv, {}, nullptr, &flags);
+    ASSERT_GT(repaired.counts.splitEdges, 0u);
+    EXPECT_EQ(mismatches(repaired, flags), 0u);
+    // A second repair starting from them leaves the mesh as one that tests every element.
+    PairMesh again = repaired, againFresh = repaired;
+    RepairOptions quiet;
+    quiet.weldCloseNodes = quiet.countInvertedBefore = false;
+    std::vector<std::uint8_t> againFlags = flags;
+    EXPECT_EQ(repairFlippedElements(again, dv, quiet, nullptr, &againFlags), repairFlippedElements(againFresh, dv, quiet));
+    EXPECT_TRUE(again.tets == againFresh.tets);
+    EXPECT_TRUE(again.nodes == againFresh.nodes);
+    std::size_t relabelled = 0;
+    for (Index c = 0; c < dv.cellCount(); c += 7) {
+      if (!inner[c]) continue;
+      std::vector<std::uint8_t> after = inner;
+      after[c] = 0;
+      PairMesh m = repaired;
+      std::vector<std::uint8_t> mFlags = flags;
+      if (!builder.relabel(m, after, {c}, &mFlags)) continue;
+      EXPECT_EQ(mismatches(m, mFlags), 0u) << c;
+      ++relabelled;
+    }
+    EXPECT_GT(relabelled, 10u);
+  }
+  std::size_t flaggedKept = 0;
+  for (const SampleSet& samples : {knife(0.3), gridBoxSamples(5, 0.2)}) {
+    const DelaunayVoronoi dv(samples.points);
+    const std::vector<std::uint8_t> full = everyFiniteCell(dv);
+    PairMeshBuilder builder(dv, samples, nullptr);
+    for (Index stride : {3u, 7u, 50u}) {
+      std::vector<Index> cells;
+      std::vector<std::uint8_t> after = full;
+      for (Index c = 0; c < dv.cellCount(); c += stride)
+        if (full[c]) cells.push_back(c), after[c] = 0;
+      PairMesh m = builder.build(full);
+      std::vector<std::uint8_t> flags = flagsOf(m);
+      ASSERT_TRUE(builder.relabel(m, after, cells, &flags));
+      EXPECT_EQ(mismatches(m, flags), 0u) << stride;
+      flaggedKept += std::count(flags.begin(), flags.end(), 1);
+    }
+  }
+  EXPECT_GT(flaggedKept, 100u);
+}
+
 namespace {
 
 // The cusp of the lever (bm2_ec_lever-A), made exact: the box

@@ -118,7 +118,10 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
 // could not fix is split (splitBoundaryEdges) and the nodes are moved again.
 // Updates the counts; returns the number of negative elements left, and
 // in *needingRepair (when given) the number of elements left negative or
-// flat (elementNeedsRepair).
+// flat (elementNeedsRepair). needsRepairFlags (optional): on entry, when it
+// holds one entry per element, every element's elementNeedsRepair (then no
+// pass over every element is made for it); on return, those of the
+// repaired mesh (the relabelling trials start from them).
 struct RepairOptions {
   int rounds = 12;  // of node moves
   // First put clusters of Voronoi nodes closer than h/200 on one position
@@ -129,7 +132,8 @@ struct RepairOptions {
   bool countInvertedBefore = true;
 };
 std::size_t repairFlippedElements(PairMesh& mesh, const DelaunayVoronoi& dv, const RepairOptions& options = {},
-                                  std::size_t* needingRepair = nullptr);
+                                  std::size_t* needingRepair = nullptr,
+                                  std::vector<std::uint8_t>* needsRepairFlags = nullptr);
 
 // Seed 003 §4.1, second case: a boundary edge ab that misses its Voronoi cut
 // face (the chain of inner Voronoi nodes around it) folds some of its
@@ -140,8 +144,12 @@ std::size_t repairFlippedElements(PairMesh& mesh, const DelaunayVoronoi& dv, con
 // A split is kept only when it leaves fewer negative elements. Returns the
 // number of edges split. candidates (optional): elements among which are
 // all the negative ones (the repair's flagged elements), so that the search
-// need not test every element.
-std::size_t splitBoundaryEdges(PairMesh& mesh, const std::vector<std::size_t>* candidates = nullptr);
+// need not test every element. needsRepairFlags (optional): every element's
+// elementNeedsRepair, kept so (the replaced elements' entries go with them,
+// the new elements get theirs), so that the repair after the splits need
+// not test every element again.
+std::size_t splitBoundaryEdges(PairMesh& mesh, const std::vector<std::size_t>* candidates = nullptr,
+                               std::vector<std::uint8_t>* needsRepairFlags = nullptr);
 
 // Signed volume of tetrahedron i (positive = valid orientation).
 double tetVolume(const PairMesh& mesh, std::size_t i);
