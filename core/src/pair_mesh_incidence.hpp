@@ -4,10 +4,13 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <stdexcept>
 #include <unordered_map>
 #include <vector>
+
+#include <tbb/parallel_for.h>
 
 #include "cadmedial/pair_mesh.hpp"
 
@@ -23,16 +26,27 @@ class NodeIncidence {
     kept_.assign(n, 0);
     for (Index v = 0; v < n; ++v) kept_[v] = keep(v) ? 1 : 0;
     elements_ = m.tets.size();
+    // The (node, element) pairs of the kept nodes, in element order: found
+    // in parallel over blocks of elements joined in block order (the kept
+    // nodes are often a few thousand of 10^5, and two serial passes over
+    // every element were most of a build).
+    constexpr std::size_t kBlock = 16384;
+    const std::size_t blocks = (m.tets.size() + kBlock - 1) / kBlock;
+    std::vector<std::vector<std::array<Index, 2>>> found(blocks);
+    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
+      const std::size_t end = std::min(m.tets.size(), (b + 1) * kBlock);
+      for (std::size_t i = b * kBlock; i < end; ++i)
+        for (Index v : m.tets[i])
+          if (kept_[v]) found[b].push_back({v, static_cast<Index>(i)});
+    });
     offsets_.assign(n + 1, 0);
-    for (const auto& t : m.tets)
-      for (Index v : t)
-        if (kept_[v]) ++offsets_[v + 1];
+    for (const auto& block : found)
+      for (const auto& pair : block) ++offsets_[pair[0] + 1];
     for (std::size_t v = 0; v < n; ++v) offsets_[v + 1] += offsets_[v];
     incident_.resize(offsets_[n]);
     std::vector<Index> fill(offsets_.begin(), offsets_.end() - 1);
-    for (std::size_t i = 0; i < m.tets.size(); ++i)
-      for (Index v : m.tets[i])
-        if (kept_[v]) incident_[fill[v]++] = static_cast<Index>(i);
+    for (const auto& block : found)
+      for (const auto& pair : block) incident_[fill[pair[0]]++] = pair[1];
     rewritten_.clear();
     extra_.clear();
   }

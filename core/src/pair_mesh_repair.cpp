@@ -120,13 +120,20 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
       for (Index v : m.tets[i])
         if (voronoiNode(v)) inRegion[v] = 1;
     for (Index v : alsoNodes) inRegion[v] = 1;
+    // (Each ring's Voronoi nodes gathered in parallel, marked after.)
     for (int ring = 0; ring < 2; ++ring) {
-      std::vector<std::uint8_t> grown = inRegion;
-      for (const auto& t : m.tets)
-        if (inRegion[t[0]] || inRegion[t[1]] || inRegion[t[2]] || inRegion[t[3]])
-          for (Index v : t)
-            if (voronoiNode(v)) grown[v] = 1;
-      inRegion.swap(grown);
+      tbb::enumerable_thread_specific<std::vector<Index>> reached;
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.tets.size()), [&](const auto& r) {
+        auto& local = reached.local();
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          const auto& t = m.tets[i];
+          if (inRegion[t[0]] || inRegion[t[1]] || inRegion[t[2]] || inRegion[t[3]])
+            for (Index v : t)
+              if (voronoiNode(v)) local.push_back(v);
+        }
+      });
+      for (const auto& local : reached)
+        for (Index v : local) inRegion[v] = 1;
     }
     incidence.build(m, inRegionNode);
   };

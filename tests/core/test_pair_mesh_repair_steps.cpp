@@ -219,6 +219,36 @@ TEST(PairMeshRepairSteps, IncidenceFollowsRetriangulations) {
   EXPECT_THROW(kept.forEach(m, 0, [](Index) {}), std::logic_error);
 }
 
+// A build lists each kept node's elements, all of them and in increasing
+// order, however it splits the elements for its parallel pass (16384 a
+// block: this mesh has several), and only the kept nodes'.
+TEST(PairMeshRepairSteps, IncidenceBuildListsEveryElementInOrder) {
+  const Vec3 axes{1.0, 0.7, 0.45};
+  const SampleSet samples = cadmedial::testing::ellipsoidCloud(axes, 4000, 1);
+  const DelaunayVoronoi dv(samples.points);
+  PairMeshBuilder builder(dv, samples, nullptr);
+  const PairMesh m = builder.build(everyFiniteCell(dv));
+  ASSERT_GT(m.size(), 3 * 16384u);
+  auto keep = [&m](Index v) { return !m.isBoundaryNode(v) && v % 3 != 0; };
+  NodeIncidence incidence;
+  incidence.build(m, keep);
+  std::vector<std::vector<Index>> byDefinition(m.nodes.size()), listed(m.nodes.size());
+  for (std::size_t i = 0; i < m.size(); ++i)
+    for (Index v : m.tets[i])
+      if (keep(v)) byDefinition[v].push_back(static_cast<Index>(i));
+  std::size_t kept = 0;
+  for (Index v = 0; v < m.nodes.size(); ++v) {
+    if (!keep(v)) {
+      EXPECT_THROW(incidence.forEach(m, v, [](Index) {}), std::logic_error);
+      continue;
+    }
+    incidence.forEach(m, v, [&](Index i) { listed[v].push_back(i); });
+    ++kept;
+  }
+  EXPECT_GT(kept, 1000u);
+  EXPECT_EQ(listed, byDefinition);
+}
+
 // Inner cells around every edge of the triangulation form at most one run.
 std::size_t nonManifoldEdges(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner) {
   std::size_t bad = 0;
