@@ -104,14 +104,14 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
       for (Index c : cells) trialInner[c] = goingInner ? 1 : 0;
       PairMesh trial = mesh;
       std::vector<std::uint8_t> trialFlags = flags;
-      if (!builder.relabel(trial, trialInner, cells, &trialFlags)) {
-        trial = builder.build(trialInner);
-        keepRepairedPositions(mesh, trial);
-        trialFlags.clear();  // the repair flags all elements
-      }
-      trial.counts.movedNodes = trial.counts.retriangulatedPolygons = 0;
       RepairOptions again;
       again.weldCloseNodes = again.countInvertedBefore = false;
+      again.flagsAreCurrent = builder.relabel(trial, trialInner, cells, &trialFlags);
+      if (!again.flagsAreCurrent) {  // (then the repair flags every element)
+        trial = builder.build(trialInner);
+        keepRepairedPositions(mesh, trial);
+      }
+      trial.counts.movedNodes = trial.counts.retriangulatedPolygons = 0;
       std::size_t trialNeedingRepair = 0;
       const std::size_t trialInverted = repairFlippedElements(trial, dv, again, &trialNeedingRepair, &trialFlags);
       // Fewer inverted, or as many with less volume inverted (a fold pushed

@@ -364,9 +364,10 @@ void PairMeshBuilder::elements() {
     total += edgeParts[b].size() + faceParts[b].size();
     triangles += faceParts[b].boundaryTriangles.size();
   }
-  // Room for the elements the repair's edge splits add (a few per split),
-  // so that they do not move the whole mesh to grow it (on the lever,
-  // moving 418 k elements to fresh pages was most of its 8 splits' time).
+  // Room for the elements the first repair's edge splits add (a few per
+  // split), so that they do not move the whole mesh to grow it (on the
+  // lever, moving 418 k elements to fresh pages was most of its 8 splits'
+  // time; a relabelling trial's copy has no such room).
   const std::size_t room = total + total / 128 + 1024;
   m.tets.reserve(room);
   m.type.reserve(room);

@@ -11,6 +11,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -129,7 +130,7 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
           const auto& t = m.tets[i];
           if (inRegion[t[0]] || inRegion[t[1]] || inRegion[t[2]] || inRegion[t[3]])
             for (Index v : t)
-              if (voronoiNode(v)) local.push_back(v);
+              if (voronoiNode(v) && !inRegion[v]) local.push_back(v);
         }
       });
       for (const auto& local : reached)
@@ -523,7 +524,9 @@ std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, const 
   // needing repair (inverted ones are among them), unless the caller's
   // flags are current; the weld keeps the flags current, so the first
   // round need not test all.
-  bool flagsCurrent = needsRepairFlag.size() == m.tets.size() && m.tets.size() > 0;
+  if (options.flagsAreCurrent && needsRepairFlag.size() != m.tets.size())
+    throw std::invalid_argument("pair-mesh repair: current flags must hold one entry per element");
+  bool flagsCurrent = options.flagsAreCurrent;
   if (options.countInvertedBefore && !flagsCurrent) {
     needsRepairFlag.assign(m.tets.size(), 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.tets.size()), [&](const auto& r) {

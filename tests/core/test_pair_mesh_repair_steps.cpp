@@ -618,14 +618,28 @@ TEST(PairMeshRepairSteps, RepairFlagsFollowSplitsAndRelabelling) {
     repairFlippedElements(repaired, dv, {}, nullptr, &flags);
     ASSERT_GT(repaired.counts.splitEdges, 0u);
     EXPECT_EQ(mismatches(repaired, flags), 0u);
-    // A second repair starting from them leaves the mesh as one that tests every element.
-    PairMesh again = repaired, againFresh = repaired;
-    RepairOptions quiet;
+    // A repair given current flags (of the knife as built: many elements
+    // to repair) ends as one that tests every element.
+    const PairMesh built = builder.build(inner);
+    PairMesh given = built, fresh = built;
+    std::vector<std::uint8_t> givenFlags = flagsOf(built);
+    ASSERT_GT(std::count(givenFlags.begin(), givenFlags.end(), 1), 10);
+    RepairOptions quiet, quietGiven;
     quiet.weldCloseNodes = quiet.countInvertedBefore = false;
-    std::vector<std::uint8_t> againFlags = flags;
-    EXPECT_EQ(repairFlippedElements(again, dv, quiet, nullptr, &againFlags), repairFlippedElements(againFresh, dv, quiet));
-    EXPECT_TRUE(again.tets == againFresh.tets);
-    EXPECT_TRUE(again.nodes == againFresh.nodes);
+    quietGiven = quiet;
+    quietGiven.flagsAreCurrent = true;
+    std::size_t needingGiven = 0, needingFresh = 0;
+    EXPECT_EQ(repairFlippedElements(given, dv, quietGiven, &needingGiven, &givenFlags),
+              repairFlippedElements(fresh, dv, quiet, &needingFresh));
+    EXPECT_EQ(needingGiven, needingFresh);
+    EXPECT_GT(given.counts.splitEdges, 0u);
+    EXPECT_TRUE(given.tets == fresh.tets);
+    EXPECT_TRUE(given.nodes == fresh.nodes);
+    EXPECT_EQ(mismatches(given, givenFlags), 0u);
+    // Current flags of the wrong size are refused, not read.
+    std::vector<std::uint8_t> short_(built.size() - 1, 0);
+    PairMesh refused = built;
+    EXPECT_THROW(repairFlippedElements(refused, dv, quietGiven, nullptr, &short_), std::invalid_argument);
     std::size_t relabelled = 0;
     for (Index c = 0; c < dv.cellCount(); c += 7) {
       if (!inner[c]) continue;
@@ -825,15 +839,17 @@ TEST(PairMeshRepairSteps, RepairFinishesOnHostileLabels) {
 
 // The repair takes its count of inverted elements before repair from the
 // pass that flags the elements needing it, and the weld of close Voronoi
-// nodes then flags again the elements it changed, instead of every element
+// nodes then keeps those flags current itself (read before a cluster's
+// move, written by the pass that accepts it), instead of every element
 // being tested again. The repair must end exactly as when the flags are
 // computed afresh after the weld (the count switched off), and the count
 // must be that of the mesh as built. On these ellipsoid clouds the weld
 // changes whether some elements need repair; with the changed elements'
 // flags left as they were before the weld, the meshes differ (seed 3 at
-// 4000 points, 2026-12-07). Both sides run the same node moves, so this
-// does not check those against the code before; byte-identical outputs on
-// the bundled and public parts did.
+// 4000 points, 2026-12-07). This is the test of the weld's kept flags.
+// Both sides run the same node moves, so this does not check those against
+// the code before; byte-identical outputs on the bundled and public parts
+// did.
 TEST(PairMeshRepairSteps, CountBeforeRepairLeavesTheRepairAsItWas) {
   const Vec3 axes{1.0, 0.7, 0.45};
   auto inside = [&](const Vec3& p) {

@@ -118,10 +118,10 @@ PairMesh buildPairMesh(const DelaunayVoronoi& dv, const SampleSet& samples, cons
 // could not fix is split (splitBoundaryEdges) and the nodes are moved again.
 // Updates the counts; returns the number of negative elements left, and
 // in *needingRepair (when given) the number of elements left negative or
-// flat (elementNeedsRepair). needsRepairFlags (optional): on entry, when it
-// holds one entry per element, every element's elementNeedsRepair (then no
-// pass over every element is made for it); on return, those of the
-// repaired mesh (the relabelling trials start from them).
+// flat (elementNeedsRepair). needsRepairFlags (optional): on entry, with
+// options.flagsAreCurrent, every element's elementNeedsRepair (one entry
+// per element); on return, those of the repaired mesh (the relabelling
+// trials start from them).
 struct RepairOptions {
   int rounds = 12;  // of node moves
   // First put clusters of Voronoi nodes closer than h/200 on one position
@@ -130,6 +130,10 @@ struct RepairOptions {
   // Set counts.invertedBeforeRepair (a pass over every element); off where
   // the caller keeps that count itself (the relabelling trials).
   bool countInvertedBefore = true;
+  // The needsRepairFlags passed in hold every element's elementNeedsRepair
+  // for the mesh as it is (then no pass over every element is made for
+  // them). Off, they are computed, whatever they hold.
+  bool flagsAreCurrent = false;
 };
 std::size_t repairFlippedElements(PairMesh& mesh, const DelaunayVoronoi& dv, const RepairOptions& options = {},
                                   std::size_t* needingRepair = nullptr,
