@@ -313,11 +313,7 @@ bool PairMeshBuilder::relabel(PairMesh& mesh, const std::vector<std::uint8_t>& a
   // by cell id.)
   removeNodes(mesh, dropNode);
   recountElements(mesh);
-  if (needsRepairFlags) {
-    needsRepairFlags->resize(mesh.size());
-    for (std::size_t i = keptElements; i < mesh.size(); ++i)
-      (*needsRepairFlags)[i] = elementNeedsRepair(mesh.nodes, mesh.tets[i]) ? 1 : 0;
-  }
+  if (needsRepairFlags) flagElementsNeedingRepair(mesh.nodes, mesh.tets, *needsRepairFlags, keptElements);
   PairMeshCounts& k = mesh.counts;
   k.splitEdges = splitNodeCount(mesh);
   for (Index c : cells) gone[c] ? --k.innerCells : ++k.innerCells;

@@ -479,11 +479,7 @@ class EdgeSplitter {
   // Drops the replaced elements and rebuilds the boundary triangles; the
   // flags, when kept, follow (the new elements are the appended ones).
   void rebuild() {
-    if (flags_) {
-      const std::size_t old = flags_->size();
-      flags_->resize(m_.size());
-      for (std::size_t i = old; i < m_.size(); ++i) (*flags_)[i] = elementNeedsRepair(m_.nodes, m_.tets[i]) ? 1 : 0;
-    }
+    if (flags_) flagElementsNeedingRepair(m_.nodes, m_.tets, *flags_, flags_->size());
     std::vector<std::uint8_t> drop(m_.size(), 0);
     for (std::size_t i : removed_) drop[i] = 1;
     removeElements(m_, drop, flags_);

@@ -17,6 +17,15 @@ bool elementNeedsRepair(const std::vector<Vec3>& nodes, const std::array<Index, 
   return CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3])) != CGAL::POSITIVE;
 }
 
+void flagElementsNeedingRepair(const std::vector<Vec3>& nodes, const std::vector<std::array<Index, 4>>& tets,
+                               std::vector<std::uint8_t>& flags, std::size_t first) {
+  flags.resize(tets.size());
+  if (first >= tets.size()) return;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(first, tets.size()), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) flags[i] = elementNeedsRepair(nodes, tets[i]) ? 1 : 0;
+  });
+}
+
 std::size_t countElementsNeedingRepair(const std::vector<Vec3>& nodes, const std::vector<std::array<Index, 4>>& tets) {
   return countElements(tets.size(), [&](std::size_t i) { return elementNeedsRepair(nodes, tets[i]); });
 }

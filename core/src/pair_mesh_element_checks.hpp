@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -14,6 +15,12 @@ namespace cadmedial {
 // lying on its neighbours' cuts, which crosses them. Flat elements with two
 // coincident corners (welded Voronoi nodes) cut to nothing and are fine.
 bool elementNeedsRepair(const std::vector<Vec3>& nodes, const std::array<Index, 4>& tet);
+
+// flags[i] = elementNeedsRepair for the elements i >= first (in parallel;
+// flags is resized to one entry per element, those before `first` kept):
+// the whole mesh with first = 0, or the elements an edit appended.
+void flagElementsNeedingRepair(const std::vector<Vec3>& nodes, const std::vector<std::array<Index, 4>>& tets,
+                               std::vector<std::uint8_t>& flags, std::size_t first = 0);
 
 // Elements needing repair among `tets`.
 std::size_t countElementsNeedingRepair(const std::vector<Vec3>& nodes, const std::vector<std::array<Index, 4>>& tets);

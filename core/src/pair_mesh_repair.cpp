@@ -78,7 +78,6 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
   // Per element: needs repair. Kept current as nodes move (only the
   // elements around a moved node change, and the polygons re-triangulated
   // update theirs), so that no round has to test all elements again.
-  if (!flagsCurrent) badFlag.assign(m.tets.size(), 0);
   // The elements flagged, so that a round looks at those only (a few
   // hundred among 10^5-10^6): every flagged element is listed; elements
   // flagged no more, and repeats, until the next count.
@@ -93,10 +92,7 @@ std::size_t moveVoronoiNodes(PairMesh& m, const DelaunayVoronoi& dv, int rounds,
   // Flags every element (unless the caller's flags are current) and lists
   // the flagged ones.
   auto flagAndListAll = [&]() {
-    if (!flagsCurrent)
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.tets.size()), [&](const auto& r) {
-        for (std::size_t i = r.begin(); i != r.end(); ++i) badFlag[i] = needsRepair(m, i) ? 1 : 0;
-      });
+    if (!flagsCurrent) flagElementsNeedingRepair(m.nodes, m.tets, badFlag);
     flagged.clear();
     for (std::size_t i = 0; i < m.tets.size(); ++i)
       if (badFlag[i]) flagged.push_back(i);
@@ -528,10 +524,7 @@ std::size_t repairFlippedElements(PairMesh& m, const DelaunayVoronoi& dv, const 
     throw std::invalid_argument("pair-mesh repair: current flags must hold one entry per element");
   bool flagsCurrent = options.flagsAreCurrent;
   if (options.countInvertedBefore && !flagsCurrent) {
-    needsRepairFlag.assign(m.tets.size(), 0);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.tets.size()), [&](const auto& r) {
-      for (std::size_t i = r.begin(); i != r.end(); ++i) needsRepairFlag[i] = needsRepair(m, i) ? 1 : 0;
-    });
+    flagElementsNeedingRepair(m.nodes, m.tets, needsRepairFlag);
     flagsCurrent = true;
   }
   if (options.countInvertedBefore)
