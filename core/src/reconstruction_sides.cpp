@@ -66,9 +66,10 @@ ReconstructionSides reconstructionSides(const SoupTree& mesh, const DelaunayVoro
   // Per cell: 0 skipped (infinite), 1 centre inside the mesh's box, 2 outside
   // it (so outside the mesh), and whether it is near a triangle.
   enum : std::uint8_t { kNone = 0, kInBox = 1, kOutOfBox = 2 };
-  // How far into a triangle a point can be from its corners, per grid cell
-  // (triangle_reach_grid.hpp): it spares most near queries and segments.
-  const TriangleReachGrid reachGrid(mesh.triangles);
+  // How far into a triangle a point can be from its corners, and the
+  // largest deviation of its triangles, per grid cell
+  // (triangle_reach_grid.hpp): they spare most near queries and segments.
+  const TriangleReachGrid reachGrid(mesh.triangles, deviation);
   const bool samplesAreVertices = dv.sampleCount() + 1 == mesh.firstTriangle.size();
   std::vector<std::uint8_t> where(m, kNone), near(m, 0), wellShaped(m, 0);
   std::vector<Kernel::Point_3> centre(m);
@@ -95,15 +96,26 @@ ReconstructionSides reconstructionSides(const SoupTree& mesh, const DelaunayVoro
       // its group's ray starts at the centre itself, the ray a near cell would
       // get from the caller. The near query is skipped: same answers.
       if (!(maxDeviation > 0) || (wanted && !(*wanted)[id]) || !inBox(p, maxDeviation)) continue;
-      const CGAL::Bbox_3 cube(p.x() - maxDeviation, p.y() - maxDeviation, p.z() - maxDeviation,
-                              p.x() + maxDeviation, p.y() + maxDeviation, p.z() + maxDeviation);
+      // Every triangle t within d_t of the centre has d_t <= the largest
+      // deviation of the triangles in the grid cells around it (only curved
+      // faces' triangles deviate by more than their tolerance): that bounds
+      // the cube below. Both cubes are grown by 1e-6 of their half-side and
+      // by the rounding of the centre's coordinates, so a triangle at d_t
+      // (1 + 1e-9) from it, which the test below counts as near, is in them.
+      const double rounding = 1e-12 * (std::abs(p.x()) + std::abs(p.y()) + std::abs(p.z()));
+      auto cubeAround = [&](double half) {
+        half = half * (1 + 1e-6) + rounding;
+        return CGAL::Bbox_3(p.x() - half, p.y() - half, p.z() - half, p.x() + half, p.y() + half, p.z() + half);
+      };
+      const double localDeviation = std::min(maxDeviation, reachGrid.deviationWithin(cubeAround(maxDeviation)));
+      const CGAL::Bbox_3 cube = cubeAround(localDeviation);
       // A point of triangle t within d_t of the centre is within reach(t)
       // of a sample, so the nearest sample (at the circumradius) would be
       // within d_t + reach(t): farther than that, no query.
       const double margin = 1e-8 * dv.circumradius(c) + 1e-12 * (std::abs(x[0]) + std::abs(x[1]) + std::abs(x[2]));
-      if (wellShaped[id] && dv.circumradius(c) - margin > 1.01 * (maxDeviation + reachGrid.reachWithin(cube))) continue;
+      if (wellShaped[id] && dv.circumradius(c) - margin > 1.01 * (localDeviation + reachGrid.reachWithin(cube))) continue;
       // Near iff within d_t of some triangle t: the candidates are the
-      // triangles whose boxes meet the cube of half-side max d_t.
+      // triangles whose boxes meet the cube.
       hits.clear();
       tree.all_intersected_primitives(cube, std::back_inserter(hits));
       for (const auto& t : hits) {

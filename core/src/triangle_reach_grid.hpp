@@ -32,8 +32,10 @@ namespace cadmedial::soup {
 class TriangleReachGrid {
  public:
   // About half as many cells as triangles, at most 64 a side (surface
-  // triangles crowd into the cells the surface crosses).
-  explicit TriangleReachGrid(const Triangles& triangles) {
+  // triangles crowd into the cells the surface crosses). With `deviation`
+  // (one value per triangle), each cell also keeps the largest deviation
+  // of its triangles (deviationWithin).
+  explicit TriangleReachGrid(const Triangles& triangles, const std::vector<double>& deviation = {}) {
     if (triangles.empty()) return;
     box_ = triangles.front().bbox();
     for (const auto& t : triangles) box_ += t.bbox();
@@ -45,8 +47,11 @@ class TriangleReachGrid {
       const double span = box_.max(k) - box_.min(k);
       scale_[k] = span > 0 ? n_ / span : 0;
     }
+    const bool withDeviation = deviation.size() == triangles.size();
     reach_.assign(static_cast<std::size_t>(n_) * n_ * n_, 0.0);
-    for (const auto& t : triangles) {
+    if (withDeviation) deviation_.assign(reach_.size(), 0.0);
+    for (std::size_t id = 0; id < triangles.size(); ++id) {
+      const auto& t = triangles[id];
       const double r = reach(t);
       const CGAL::Bbox_3 b = t.bbox();
       int lo[3], hi[3];
@@ -54,8 +59,9 @@ class TriangleReachGrid {
       for (int i = lo[0]; i <= hi[0]; ++i)
         for (int j = lo[1]; j <= hi[1]; ++j)
           for (int k = lo[2]; k <= hi[2]; ++k) {
-            double& cell = reach_[index(i, j, k)];
-            cell = std::max(cell, r);
+            const std::size_t cell = index(i, j, k);
+            reach_[cell] = std::max(reach_[cell], r);
+            if (withDeviation) deviation_[cell] = std::max(deviation_[cell], deviation[id]);
           }
     }
   }
@@ -63,19 +69,16 @@ class TriangleReachGrid {
   // The largest reach of the triangles in the cells the box [lo, hi] meets
   // (0 where there are none); +inf when that box covers more than maxCells
   // cells (not worth scanning: the caller queries the tree).
-  double reachWithin(const CGAL::Bbox_3& b, int maxCells = 64) const {
-    if (reach_.empty() || b.xmax() < box_.xmin() || b.xmin() > box_.xmax() || b.ymax() < box_.ymin() ||
-        b.ymin() > box_.ymax() || b.zmax() < box_.zmin() || b.zmin() > box_.zmax())
-      return 0;
-    int lo[3], hi[3];
-    cellRange(b, lo, hi);
-    if ((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > maxCells)
-      return std::numeric_limits<double>::infinity();
-    double most = 0;
-    for (int i = lo[0]; i <= hi[0]; ++i)
-      for (int j = lo[1]; j <= hi[1]; ++j)
-        for (int k = lo[2]; k <= hi[2]; ++k) most = std::max(most, reach_[index(i, j, k)]);
-    return most;
+  double reachWithin(const CGAL::Bbox_3& b, int maxCells = 64) const { return mostWithin(reach_, b, maxCells); }
+
+  // The same for the triangles' deviations (+inf without them). A triangle
+  // t with a point within d_t of p lies in a cell that the cube of
+  // half-side d_t around p meets, so d_t <= deviationWithin(any larger
+  // cube around p): the near test of reconstruction_sides.cpp shrinks its
+  // cube from the largest deviation anywhere to this.
+  double deviationWithin(const CGAL::Bbox_3& b, int maxCells = 64) const {
+    if (deviation_.empty() && !reach_.empty()) return std::numeric_limits<double>::infinity();
+    return mostWithin(deviation_, b, maxCells);
   }
 
   static double reach(const Kernel::Triangle_3& t) {
@@ -95,6 +98,20 @@ class TriangleReachGrid {
   }
 
  private:
+  double mostWithin(const std::vector<double>& values, const CGAL::Bbox_3& b, int maxCells) const {
+    if (values.empty() || b.xmax() < box_.xmin() || b.xmin() > box_.xmax() || b.ymax() < box_.ymin() ||
+        b.ymin() > box_.ymax() || b.zmax() < box_.zmin() || b.zmin() > box_.zmax())
+      return 0;
+    int lo[3], hi[3];
+    cellRange(b, lo, hi);
+    if ((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > maxCells)
+      return std::numeric_limits<double>::infinity();
+    double most = 0;
+    for (int i = lo[0]; i <= hi[0]; ++i)
+      for (int j = lo[1]; j <= hi[1]; ++j)
+        for (int k = lo[2]; k <= hi[2]; ++k) most = std::max(most, values[index(i, j, k)]);
+    return most;
+  }
   void cellRange(const CGAL::Bbox_3& b, int lo[3], int hi[3]) const {
     for (int k = 0; k < 3; ++k) {
       lo[k] = cellOf(b.min(k), k);
@@ -114,6 +131,7 @@ class TriangleReachGrid {
   int n_ = 0;
   double scale_[3] = {0, 0, 0};
   std::vector<double> reach_;
+  std::vector<double> deviation_;  // empty unless given
 };
 
 }  // namespace cadmedial::soup

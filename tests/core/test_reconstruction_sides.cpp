@@ -3,7 +3,9 @@
 // boundary), and the bound that lets most Voronoi edges skip the AABB tree.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <random>
 
@@ -52,48 +54,70 @@ void expectSidesMatchTheSolid(const PlanarSolid& solid, double spacing) {
   EXPECT_LT(sides.segmentTests, finiteFacets / 2 / 3) << "tree queries " << sides.segmentTests;
 }
 
-}  // namespace
-
-// With a band: "near" exactly where some triangle is within the band
-// (brute force over all triangles, for every 11th cell), and the others on
-// the solid's side. The reach bound spares most near queries; a wrong bound
+// "near" exactly where some triangle t is within its deviation d_t (brute
+// force over all triangles, for every 11th cell), and the others on the
+// solid's side. The reach bound spares most near queries, and the largest
+// deviation around a centre shrinks the cube it queries; a wrong bound
 // would call near cells far.
-TEST(ReconstructionSides, NearCellsAreThoseWithinTheBandOfATriangle) {
+void expectNearWithinEachTrianglesDeviation(const std::function<double(const soup::Kernel::Triangle_3&)>& deviationOf) {
   SamplingOptions options;
   options.spacing = 0.05;
   const PlanarSolid solid = makeLPrism();
   const SampleSet samples = samplePlanarSolid(solid, options);
   const DelaunayVoronoi dv(samples.points);
-  const double band = 0.3 * options.spacing;
-  const ReconstructionSides sides =
-      reconstructionSides(dv, samples, std::vector<double>(samples.triangles.size(), band));
+  std::vector<soup::Kernel::Triangle_3> triangles;
+  std::vector<double> deviation;
+  for (const auto& t : samples.triangles) {
+    const auto& a = samples.points[t[0]], &b = samples.points[t[1]], &d = samples.points[t[2]];
+    triangles.emplace_back(soup::Kernel::Point_3(a[0], a[1], a[2]), soup::Kernel::Point_3(b[0], b[1], b[2]),
+                           soup::Kernel::Point_3(d[0], d[1], d[2]));
+    deviation.push_back(deviationOf(triangles.back()));
+  }
+  const double band = *std::max_element(deviation.begin(), deviation.end());
+  const ReconstructionSides sides = reconstructionSides(dv, samples, deviation);
   std::size_t near = 0, far = 0;
   for (Index c = 0; c < dv.cellCount(); c += 11) {
     if (dv.isInfinite(c) || sides.side[c] == kReconstructionSkipped) continue;
     const Vec3& x = dv.circumcenter(c);
     const soup::Kernel::Point_3 p(x[0], x[1], x[2]);
-    double closest = std::numeric_limits<double>::infinity();
-    for (const auto& t : samples.triangles) {
-      const auto& a = samples.points[t[0]], &b = samples.points[t[1]], &d = samples.points[t[2]];
-      closest = std::min(closest, CGAL::squared_distance(p, soup::Kernel::Triangle_3({a[0], a[1], a[2]}, {b[0], b[1], b[2]},
-                                                                                      {d[0], d[1], d[2]})));
+    bool within = false, onEdge = false;
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      const double gap = std::sqrt(CGAL::squared_distance(p, triangles[t])) - deviation[t];
+      within = within || gap < 0;
+      onEdge = onEdge || std::abs(gap) < 1e-9;
     }
-    closest = std::sqrt(closest);
-    if (std::abs(closest - band) < 1e-9) continue;  // on the band's edge: either answer
+    if (onEdge) continue;  // on a band's edge: either answer
     const bool outsideBox = x[0] < samples.bboxMin[0] - band || x[0] > samples.bboxMax[0] + band ||
                             x[1] < samples.bboxMin[1] - band || x[1] > samples.bboxMax[1] + band ||
                             x[2] < samples.bboxMin[2] - band || x[2] > samples.bboxMax[2] + band;
     if (outsideBox) continue;  // never asked: outside the box grown by the band
-    EXPECT_EQ(sides.side[c] == kReconstructionNear, closest < band) << "cell " << c << " at distance " << closest;
-    if (closest < band) {
+    EXPECT_EQ(sides.side[c] == kReconstructionNear, within) << "cell " << c << " at " << x[0] << ", " << x[1] << ", " << x[2];
+    if (within) {
       ++near;
     } else {
       ++far;
       EXPECT_EQ(sides.side[c] == kReconstructionInside, solid.inside(x)) << "cell " << c;
     }
   }
-  EXPECT_GT(near, 100u);
+  EXPECT_GT(near, 50u);
   EXPECT_GT(far, 100u);
+}
+
+}  // namespace
+
+TEST(ReconstructionSides, NearCellsAreThoseWithinTheBandOfATriangle) {
+  expectNearWithinEachTrianglesDeviation([](const soup::Kernel::Triangle_3&) { return 0.3 * 0.05; });
+}
+
+// Deviations that differ by 30x from triangle to triangle (as a coarse
+// fillet's beside planar faces do), one in five large, scattered: each
+// triangle's own deviation counts, also where the centre's grid cell holds
+// only small ones and a large one is in the next cell.
+TEST(ReconstructionSides, NearCellsAreThoseWithinTheirOwnTrianglesDeviation) {
+  std::mt19937 random(11);
+  expectNearWithinEachTrianglesDeviation([&](const soup::Kernel::Triangle_3&) {
+    return random() % 5 == 0 ? 0.3 * 0.05 : 0.01 * 0.05;
+  });
 }
 
 TEST(ReconstructionSides, EveryVoronoiVertexOnTheSolidsSide) {
@@ -137,4 +161,44 @@ TEST(ReconstructionSides, TriangleReachBoundsTheDistanceToTheNearestCorner) {
   const soup::TriangleReachGrid grid(triangles);
   EXPECT_GE(grid.reachWithin(CGAL::Bbox_3(0.4, 0.1, -0.1, 0.6, 0.2, 0.1)), soup::TriangleReachGrid::reach(shapes[0]));
   EXPECT_EQ(grid.reachWithin(CGAL::Bbox_3(20, 20, 20, 21, 21, 21)), 0.0);
+}
+
+// deviationWithin: for any point p, every triangle t within its deviation
+// d_t of p has d_t <= the largest deviation the grid holds around p (in the
+// cube of half-side max d_t); +inf without deviations, 0 where no
+// triangle is. 3000 small triangles along a bent strip (a grid of 11
+// cells a side), one in five of its middle fifth deviating by 2, the
+// others by less than 0.05; 2000 random points near it.
+TEST(ReconstructionSides, GridDeviationBoundsEveryTriangleWithinItsDeviation) {
+  using P = soup::Kernel::Point_3;
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0, 1);
+  soup::Triangles triangles;
+  std::vector<double> deviation;
+  for (int i = 0; i < 3000; ++i) {
+    const double x = 100 * unit(random), y = 10 * std::sin(x / 10) + unit(random), z = 5 * unit(random);
+    triangles.emplace_back(P(x, y, z), P(x + 0.5, y, z), P(x, y + 0.5 * unit(random), z + 0.5));
+    deviation.push_back(x > 40 && x < 60 && i % 5 == 0 ? 2.0 : 0.05 * unit(random));
+  }
+  const double largest = *std::max_element(deviation.begin(), deviation.end());
+  const soup::TriangleReachGrid grid(triangles, deviation);
+  std::size_t within = 0, shrunk = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const double x = 100 * unit(random);
+    const P p(x, 10 * std::sin(x / 10) + 3 * unit(random) - 1, 7 * unit(random) - 1);
+    const CGAL::Bbox_3 cube(p.x() - largest, p.y() - largest, p.z() - largest, p.x() + largest, p.y() + largest,
+                            p.z() + largest);
+    const double bound = grid.deviationWithin(cube, 1 << 20);
+    shrunk += bound < largest;
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+      if (CGAL::squared_distance(p, triangles[t]) <= deviation[t] * deviation[t]) {
+        ++within;
+        EXPECT_GE(bound, deviation[t]) << "point " << k << " triangle " << t;
+      }
+  }
+  EXPECT_GT(within, 500u);
+  EXPECT_GT(shrunk, 100u);  // the bound is local: often below the largest deviation anywhere
+  EXPECT_EQ(grid.deviationWithin(CGAL::Bbox_3(500, 500, 500, 501, 501, 501)), 0.0);
+  EXPECT_EQ(soup::TriangleReachGrid(triangles).deviationWithin(CGAL::Bbox_3(0, 0, 0, 1, 1, 1)),
+            std::numeric_limits<double>::infinity());
 }
