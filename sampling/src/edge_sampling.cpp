@@ -12,7 +12,6 @@
 #include <BRepLProp_CLProps.hxx>
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
-#include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
@@ -209,18 +208,14 @@ void computeSpacings(SamplingContext& ctx) {
   ctx.faceSpacing.clear();
   ctx.faceSpacing.reserve(topo.faceCount());
   {
-    // Faces in parallel, each thread casting its rays through its own
-    // intersector (it keeps its last hits); every field is the same on
-    // any number of threads.
+    // Faces in parallel, each thread casting its rays through its own copy
+    // of the caster (OCCT's face intersectors keep their last hits); every
+    // field is the same on any number of threads.
     std::vector<std::optional<FaceSpacingField>> fields(topo.faceCount());
-    tbb::enumerable_thread_specific<std::unique_ptr<IntCurvesFace_ShapeIntersector>> rays;
+    const SolidRayCaster solidRays(topo.solid, FaceSpacingField::rayTolerance(ctx.spacing));
+    tbb::enumerable_thread_specific<SolidRayCaster> rays(solidRays);
     parallelForInOrder(topo.faceCount(), [&](int f) {
-      std::unique_ptr<IntCurvesFace_ShapeIntersector>& mine = rays.local();
-      if (!mine) {
-        mine = std::make_unique<IntCurvesFace_ShapeIntersector>();
-        mine->Load(topo.solid, FaceSpacingField::rayTolerance(ctx.spacing));
-      }
-      fields[f].emplace(topo.face(f), *mine, ctx.minSpacing, ctx.spacing, ctx.gradedSpacing, ctx.boundsScale);
+      fields[f].emplace(topo.face(f), rays.local(), ctx.minSpacing, ctx.spacing, ctx.gradedSpacing, ctx.boundsScale);
     });
     for (std::optional<FaceSpacingField>& field : fields) ctx.faceSpacing.push_back(std::move(*field));
   }

@@ -30,7 +30,7 @@ struct Probe {
 // clamped to the spacing range.
 class ThicknessProber {
  public:
-  ThicknessProber(const TopoDS_Face& face, const BRepAdaptor_Surface& surf, IntCurvesFace_ShapeIntersector& rays,
+  ThicknessProber(const TopoDS_Face& face, const BRepAdaptor_Surface& surf, SolidRayCaster& rays,
                   double floor, double cap, double fraction)
       : face_(face), surf_(surf), rays_(rays), inFace_(face, 1e-9), floor_(floor), cap_(cap), fraction_(fraction) {}
 
@@ -45,14 +45,13 @@ class ThicknessProber {
     const gp_Vec normal = outwardNormalAt(face_, uv);
     if (normal.Magnitude() < 0.5) return false;
     const gp_Pnt p = surf_.Value(u, v);
-    rays_.Perform(gp_Lin(p, gp_Dir(-normal)), FaceSpacingField::raySkip(cap_), 1e300);  // skips the face the ray starts on
-    if (!rays_.IsDone()) return false;
+    // The skip leaves out the face the ray starts on.
+    if (!rays_.cast(gp_Lin(p, gp_Dir(-normal)), FaceSpacingField::raySkip(cap_), 1e300, hits_)) return false;
     const double ownFaceLimit = FaceSpacingField::ownFaceReach(cap_, p);
     double thickness = 1e300;
-    for (int k = 1; k <= rays_.NbPnt(); ++k) {
-      const double w = rays_.WParameter(k);
-      if (w < ownFaceLimit && rays_.Face(k).IsSame(face_)) continue;
-      thickness = std::min(thickness, w);
+    for (const SolidRayCaster::Hit& hit : hits_) {
+      if (hit.w < ownFaceLimit && rays_.face(hit.face).IsSame(face_)) continue;
+      thickness = std::min(thickness, hit.w);
     }
     if (!(thickness < 1e300)) return false;
     const double reach = std::max(surf_.Value(u - du / 2, v - dv / 2).Distance(surf_.Value(u + du / 2, v + dv / 2)),
@@ -64,7 +63,8 @@ class ThicknessProber {
  private:
   const TopoDS_Face& face_;
   const BRepAdaptor_Surface& surf_;
-  IntCurvesFace_ShapeIntersector& rays_;
+  SolidRayCaster& rays_;
+  std::vector<SolidRayCaster::Hit> hits_;
   FaceUVClassifier inFace_;
   double floor_, cap_;
   double fraction_;  // of the thickness
@@ -112,7 +112,7 @@ double curvatureAt(const BRepAdaptor_Surface& surf, double u, double v, double d
 
 }  // namespace
 
-FaceSpacingField::FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeIntersector& solidRays, double floor,
+FaceSpacingField::FaceSpacingField(const TopoDS_Face& face, SolidRayCaster& solidRays, double floor,
                                    double cap, bool graded, double boundsScale) {
   const double curvatureFraction = kCurvatureFraction * boundsScale;
   BRepAdaptor_Surface surf(face, true);

@@ -16,10 +16,11 @@
 #include <Adaptor3d_Surface.hxx>
 #include <gp_Pnt.hxx>
 
-#include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopoDS_Face.hxx>
 
 #include "spacing_sources.hpp"
+
+#include "solid_ray_caster.hpp"
 
 namespace cadmedial {
 
@@ -66,7 +67,7 @@ class FaceSpacingField {
   // SamplingParams::gradedSpacing).
   // `boundsScale` multiplies the curvature and thickness fractions
   // (SamplingParams::boundsScale).
-  FaceSpacingField(const TopoDS_Face& face, IntCurvesFace_ShapeIntersector& solidRays, double floor, double cap,
+  FaceSpacingField(const TopoDS_Face& face, SolidRayCaster& solidRays, double floor, double cap,
                    bool graded, double boundsScale = 1.0);
 
   // Graded from sources outside the face too (points on its convex edges,

@@ -35,7 +35,6 @@
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
 #include <GProp_GProps.hxx>
-#include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopExp_Explorer.hxx>
 #include <ShapeFix_ShapeTolerance.hxx>
 #include <TopExp.hxx>
@@ -144,8 +143,7 @@ TEST(FaceSpacing, EvenWallKeepsItsSpacingBetweenProbes) {
   const double h = 2.0;
   for (const double thickness : {1.0, 100.0}) {
     const TopoDS_Shape plate = BRepPrimAPI_MakeBox(200.0, 120.0, thickness).Shape();
-    IntCurvesFace_ShapeIntersector rays;
-    rays.Load(plate, 1e-7);
+    SolidRayCaster rays(plate, 1e-7);
     const double expected = std::min(h, 0.4 * thickness);
     int bigFaces = 0;
     for (TopExp_Explorer it(plate, TopAbs_FACE); it.More(); it.Next()) {

@@ -1,0 +1,98 @@
+// SolidRayCaster against OCCT's IntCurvesFace_ShapeIntersector, which it
+// replaces for the thickness rays: the same hits (face and parameter along
+// the ray) on random rays through shapes with planar, cylindrical, toroidal
+// and B-spline faces, a hole and fillets (random rays pass no closer than
+// the tolerances to an edge, where the two may differ). A box test that
+// dropped a face the ray meets, or a face order that changed, would show here.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
+#include <IntCurvesFace_ShapeIntersector.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <gp_Ax2.hxx>
+
+#include "solid_ray_caster.hpp"
+
+using namespace cadmedial;
+
+namespace {
+
+TopoDS_Shape boxWithHole() {
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(40.0, 30.0, 10.0).Shape();
+  const TopoDS_Shape hole = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 15, -1), gp_Dir(0, 0, 1)), 6.0, 12.0).Shape();
+  return BRepAlgoAPI_Cut(box, hole).Shape();
+}
+
+TopoDS_Shape filletedBox() {
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(30.0, 20.0, 10.0).Shape();
+  BRepFilletAPI_MakeFillet fillet(box);
+  for (TopExp_Explorer e(box, TopAbs_EDGE); e.More(); e.Next()) fillet.Add(2.0, TopoDS::Edge(e.Current()));
+  return fillet.Shape();
+}
+
+void expectSameHitsAsOcct(const TopoDS_Shape& shape, const char* name) {
+  constexpr double kTolerance = 1e-7;
+  IntCurvesFace_ShapeIntersector occt;
+  occt.Load(shape, kTolerance);
+  SolidRayCaster caster(shape, kTolerance);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(-5, 45), unit(-1, 1);
+  std::vector<SolidRayCaster::Hit> hits;
+  std::size_t rays = 0, totalHits = 0;
+  for (int k = 0; k < 1500; ++k) {
+    const gp_Vec d(unit(random), unit(random), unit(random));
+    if (d.Magnitude() < 0.1) continue;
+    const gp_Lin line(gp_Pnt(coordinate(random), coordinate(random) * 0.7, coordinate(random) * 0.3), gp_Dir(d));
+    occt.Perform(line, 1e-6, 1e300);
+    ASSERT_TRUE(occt.IsDone());
+    ASSERT_TRUE(caster.cast(line, 1e-6, 1e300, hits));
+    ++rays;
+    ASSERT_EQ(hits.size(), static_cast<std::size_t>(occt.NbPnt())) << name << " ray " << k;
+    for (int i = 1; i <= occt.NbPnt(); ++i) {
+      const SolidRayCaster::Hit& hit = hits[static_cast<std::size_t>(i - 1)];
+      EXPECT_NEAR(hit.w, occt.WParameter(i), 1e-9) << name << " ray " << k << " hit " << i;
+      EXPECT_TRUE(caster.face(hit.face).IsSame(occt.Face(i))) << name << " ray " << k << " hit " << i;
+    }
+    totalHits += hits.size();
+  }
+  EXPECT_GT(totalHits, rays / 2) << name;  // most rays pass through the part
+}
+
+}  // namespace
+
+TEST(SolidRayCaster, SameHitsAsOcctsShapeIntersector) {
+  expectSameHitsAsOcct(boxWithHole(), "box with a hole");
+  expectSameHitsAsOcct(filletedBox(), "filleted box");
+  expectSameHitsAsOcct(BRepBuilderAPI_NurbsConvert(boxWithHole()).Shape(), "B-spline box with a hole");
+  expectSameHitsAsOcct(BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(20, 12, 5), gp_Dir(0, 0, 1)), 15.0, 4.0).Shape(), "torus");
+}
+
+// Copies share the faces and boxes and answer alike (one per thread).
+TEST(SolidRayCaster, CopiesAnswerAlike) {
+  const TopoDS_Shape shape = filletedBox();
+  SolidRayCaster first(shape, 1e-7);
+  SolidRayCaster copy(first);
+  EXPECT_EQ(copy.faceCount(), first.faceCount());
+  std::vector<SolidRayCaster::Hit> a, b;
+  const gp_Lin line(gp_Pnt(-5, 10, 5), gp_Dir(1, 0, 0));
+  ASSERT_TRUE(first.cast(line, 0, 1e300, a));
+  ASSERT_TRUE(copy.cast(line, 0, 1e300, b));
+  ASSERT_EQ(a.size(), 2u);  // in at x = 0, out at x = 30
+  ASSERT_EQ(b.size(), 2u);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].face, b[i].face);
+    EXPECT_DOUBLE_EQ(a[i].w, b[i].w);
+  }
+  EXPECT_NEAR(a[0].w, 5.0, 1e-9);
+  EXPECT_NEAR(a[1].w, 35.0, 1e-9);
+}
