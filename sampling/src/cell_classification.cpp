@@ -12,8 +12,9 @@
 #include <tbb/parallel_for.h>
 
 #include <BRepBndLib.hxx>
-#include <BRepClass3d_SolidClassifier.hxx>
 #include <Bnd_Box.hxx>
+
+#include "solid_point_classifier.hpp"
 
 namespace cadmedial {
 
@@ -55,7 +56,7 @@ CellClassification classifyCellsBySolid(const DelaunayVoronoi& dv, const TopoDS_
   }
 
   std::atomic<std::size_t> exact{0}, byMesh{0};
-  tbb::enumerable_thread_specific<std::optional<BRepClass3d_SolidClassifier>> classifiers;
+  tbb::enumerable_thread_specific<std::optional<SolidPointClassifier>> classifiers;
   tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(dv.cellCount()), 512),
                     [&](const tbb::blocked_range<Index>& range) {
                       auto& classifier = classifiers.local();
@@ -70,8 +71,7 @@ CellClassification classifyCellsBySolid(const DelaunayVoronoi& dv, const TopoDS_
                           continue;
                         }
                         if (!classifier) classifier.emplace(solid);
-                        classifier->Perform(gp_Pnt(p[0], p[1], p[2]), onTolerance);
-                        out.inner[c] = classifier->State() == TopAbs_IN ? 1 : 0;
+                        out.inner[c] = classifier->classify(gp_Pnt(p[0], p[1], p[2]), onTolerance) == TopAbs_IN;
                         ++queries;
                       }
                       exact += queries;

@@ -7,7 +7,6 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
-#include <BRepClass3d_SolidClassifier.hxx>
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <Geom_Curve.hxx>
@@ -19,6 +18,7 @@
 
 #include "face_uv_classifier.hpp"
 #include "ordered_parallel.hpp"
+#include "solid_point_classifier.hpp"
 
 namespace cadmedial {
 
@@ -157,7 +157,7 @@ std::vector<VertexFeature> classifyVertices(const SolidTopology& topo, const std
   // has its own classifiers.
   struct Classifiers {
     std::map<int, std::unique_ptr<FaceUVClassifier>> faces;
-    std::unique_ptr<BRepClass3d_SolidClassifier> solid;
+    std::unique_ptr<SolidPointClassifier> solid;
   };
   tbb::enumerable_thread_specific<Classifiers> perThread;
 
@@ -205,7 +205,7 @@ std::vector<VertexFeature> classifyVertices(const SolidTopology& topo, const std
                rays.end());
     feat.nonConcave = true;
     const auto scored = bestHalfSpaceNormals(rays);
-    if (!mine.solid) mine.solid = std::make_unique<BRepClass3d_SolidClassifier>(topo.solid);
+    if (!mine.solid) mine.solid = std::make_unique<SolidPointClassifier>(topo.solid);
     const gp_Pnt origin = BRep_Tool::Pnt(vertex);
     std::vector<gp_Vec> tried;
     for (const auto& [margin, n] : scored) {
@@ -216,8 +216,7 @@ std::vector<VertexFeature> classifyVertices(const SolidTopology& topo, const std
       tried.push_back(n);
       // The open half-space {x·n < 0} is free of boundary; is it inside?
       const gp_Pnt inside = origin.Translated(-n * probe);
-      mine.solid->Perform(inside, 1e-9);
-      if (mine.solid->State() == TopAbs_IN) {
+      if (mine.solid->classify(inside, 1e-9) == TopAbs_IN) {
         feat.nonConcave = false;
         break;
       }

@@ -13,11 +13,13 @@ struct SolidRayCaster::Shared {
   std::vector<TopoDS_Face> faces;
   std::vector<Bnd_Box> boxes;
   double tolerance = 0;
+  bool nearEdgesToo = false;
 };
 
-SolidRayCaster::SolidRayCaster(const TopoDS_Shape& shape, double tolerance) {
+SolidRayCaster::SolidRayCaster(const TopoDS_Shape& shape, double tolerance, bool nearEdgesToo) {
   auto shared = std::make_shared<Shared>();
   shared->tolerance = tolerance;
+  shared->nearEdgesToo = nearEdgesToo;
   for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) {
     const TopoDS_Face& face = TopoDS::Face(ex.Current());
     Bnd_Box box;
@@ -47,10 +49,12 @@ bool SolidRayCaster::cast(const gp_Lin& line, double wMin, double wMax, std::vec
     // A void box (a face without geometry) is asked, as the OCCT class would.
     if (!s.boxes[f].IsVoid() && s.boxes[f].IsOut(line)) continue;
     std::unique_ptr<IntCurvesFace_Intersector>& mine = intersectors_[f];
-    if (!mine) mine = std::make_unique<IntCurvesFace_Intersector>(s.faces[f], s.tolerance, true, false);
+    if (!mine) mine = std::make_unique<IntCurvesFace_Intersector>(s.faces[f], s.tolerance, true, s.nearEdgesToo);
     mine->Perform(line, wMin, wMax);
     if (!mine->IsDone()) return false;
-    for (int k = 1; k <= mine->NbPnt(); ++k) hits.push_back({mine->WParameter(k), static_cast<int>(f)});
+    for (int k = 1; k <= mine->NbPnt(); ++k)
+      hits.push_back({mine->WParameter(k), mine->UParameter(k), mine->VParameter(k), static_cast<int>(f),
+                      mine->State(k) == TopAbs_ON, mine->Transition(k)});
   }
   std::stable_sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) { return a.w < b.w; });
   return true;

@@ -12,8 +12,10 @@
 // it is asked, and a hit is kept when it lies in the face at zero UV
 // tolerance (UseBToler off: the classifier is built once). The OCCT class
 // also keeps hits up to its edges' tolerances outside the face; a ray that
-// passes that close to an edge can miss a hit here. The thickness rays are
-// the only user: their fields came out byte-identical on 55 parts.
+// passes that close to an edge can miss a hit here (the thickness rays'
+// fields came out byte-identical on 55 parts). With `nearEdgesToo`, hits
+// are classified as the OCCT class does, up to the edges' tolerances, and
+// such hits come out `onEdge` (SolidPointClassifier retries those rays).
 #pragma once
 
 #include <memory>
@@ -29,13 +31,16 @@ namespace cadmedial {
 class SolidRayCaster {
  public:
   struct Hit {
-    double w;  // parameter along the ray
-    int face;  // index into faces, in TopExp_Explorer order
+    double w;     // parameter along the ray
+    double u, v;  // on the face's surface
+    int face;     // index into faces, in TopExp_Explorer order
+    bool onEdge;  // on the face's boundary within its tolerance (state ON)
+    IntCurveSurface_TransitionOnCurve transition;  // In: into the solid (face orientation applied)
   };
 
   // Every face of `shape` (TopExp_Explorer order, as the OCCT class loads
   // them), with `tolerance` for the intersections.
-  SolidRayCaster(const TopoDS_Shape& shape, double tolerance);
+  SolidRayCaster(const TopoDS_Shape& shape, double tolerance, bool nearEdgesToo = false);
   // Shares the faces and boxes; builds its own intersectors (they are not
   // thread-safe): one copy per thread.
   SolidRayCaster(const SolidRayCaster& other);

@@ -1,0 +1,85 @@
+#include "solid_point_classifier.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <BRepBndLib.hxx>
+#include <BRepClass3d_BndBoxTree.hxx>
+#include <Bnd_Box.hxx>
+#include <Precision.hxx>
+#include <gp_Lin.hxx>
+
+namespace cadmedial {
+
+namespace {
+
+// Generic directions (no two parallel, none along an axis or a diagonal,
+// where CAD faces and edges tend to lie): the ray seldom grazes an edge.
+constexpr int kDirections = 8;
+const std::array<gp_Dir, kDirections>& rayDirections() {
+  static const std::array<gp_Dir, kDirections> directions{
+      gp_Dir(0.5377, 0.8034, 0.2557),  gp_Dir(-0.7311, 0.1742, 0.6597), gp_Dir(0.2231, -0.6917, 0.6868),
+      gp_Dir(-0.3319, -0.4213, -0.8441), gp_Dir(0.8719, -0.2917, -0.3933), gp_Dir(-0.1637, 0.9311, -0.3260),
+      gp_Dir(0.6143, 0.3371, -0.7134), gp_Dir(-0.8923, -0.4012, 0.2071)};
+  return directions;
+}
+
+}  // namespace
+
+SolidPointClassifier::SolidPointClassifier(const TopoDS_Shape& solid)
+    : explorer_(solid), rays_(solid, Precision::Confusion(), /*nearEdgesToo=*/true) {
+  Bnd_Box box;
+  BRepBndLib::Add(solid, box);
+  diagonal_ = box.IsVoid() ? 0 : std::sqrt(box.SquareExtent());
+  surfaces_.resize(static_cast<std::size_t>(rays_.faceCount()));
+}
+
+// A ray nearly along the surface where it crosses can miss a second
+// crossing close by (a ray grazing a B-spline fillet found its exit, not
+// its entry at the point itself): such rays are not used.
+bool SolidPointClassifier::grazes(const SolidRayCaster::Hit& hit, const gp_Dir& direction) {
+  constexpr double kGrazingSine = 0.1;  // within ~6° of the surface
+  std::unique_ptr<BRepAdaptor_Surface>& surface = surfaces_[static_cast<std::size_t>(hit.face)];
+  if (!surface) surface = std::make_unique<BRepAdaptor_Surface>(rays_.face(hit.face));
+  gp_Pnt point;
+  gp_Vec du, dv;
+  surface->D1(hit.u, hit.v, point, du, dv);
+  const gp_Vec normal = du.Crossed(dv);
+  const double length = normal.Magnitude();
+  return !(length > 0) || std::abs(normal.Dot(gp_Vec(direction))) < kGrazingSine * length;
+}
+
+TopAbs_State SolidPointClassifier::classify(const gp_Pnt& p, double tolerance) {
+  // Within an edge's or vertex's tolerance: ON, the classifier's first test.
+  BRepClass3d_BndBoxTreeSelectorPoint nearEdges(explorer_.GetMapEV());
+  nearEdges.SetCurrentPoint(p);
+  if (explorer_.GetTree().Select(nearEdges) > 0) return TopAbs_ON;
+
+  // The rays start a little behind the point: a hit at the point itself
+  // (on a face) is then inside the searched segment, where the B-spline
+  // intersector finds it (at the segment's very start it can miss it).
+  const double onReach = std::max(tolerance, 0.0);
+  const double behind = onReach + 1e-6 * diagonal_;
+  for (const gp_Dir& direction : rayDirections()) {
+    if (!rays_.cast(gp_Lin(p, direction), -behind, 1e300, hits_)) continue;
+    bool clean = true, on = false;
+    const SolidRayCaster::Hit* previous = nullptr;
+    for (const SolidRayCaster::Hit& hit : hits_) {
+      if (std::abs(hit.w) <= onReach) on = true;
+      if (hit.w <= onReach) continue;  // behind the point
+      clean = clean && !hit.onEdge && hit.transition != IntCurveSurface_Tangent &&
+              (!previous || hit.transition != previous->transition) && !grazes(hit, direction);
+      if (!previous) first_ = hit.transition;
+      previous = &hit;
+    }
+    if (on) return TopAbs_ON;
+    if (!clean || (previous && previous->transition != IntCurveSurface_Out)) continue;
+    return previous && first_ == IntCurveSurface_Out ? TopAbs_IN : TopAbs_OUT;
+  }
+  ++fallbacks_;
+  occt_.Perform(explorer_, p, tolerance);
+  return occt_.State();
+}
+
+}  // namespace cadmedial

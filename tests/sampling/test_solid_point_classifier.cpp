@@ -1,0 +1,115 @@
+// SolidPointClassifier against BRepClass3d_SolidClassifier, which it stands
+// in for (corner probes, the pair-mesh's exact cell labels): the same state
+// (IN, OUT, ON) for random points in and around shapes with planar,
+// cylindrical, toroidal and B-spline faces, holes and fillets, and for points
+// on their faces, edges and vertices and just off them. Most answers must
+// come from its own rays, not from the OCCT classifier it falls back to.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <gp_Ax2.hxx>
+
+#include "solid_point_classifier.hpp"
+
+using namespace cadmedial;
+
+namespace {
+
+TopoDS_Shape plateWithHoles() {  // 16 holes: faces with many wires
+  TopoDS_Shape plate = BRepPrimAPI_MakeBox(40.0, 40.0, 6.0).Shape();
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      plate = BRepAlgoAPI_Cut(plate, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(5 + 10 * i, 5 + 10 * j, -1), gp_Dir(0, 0, 1)),
+                                                               2.0 + 0.3 * j, 8.0)
+                                         .Shape())
+                  .Shape();
+  return plate;
+}
+
+TopoDS_Shape filletedBox() {
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(30.0, 20.0, 10.0).Shape();
+  BRepFilletAPI_MakeFillet fillet(box);
+  for (TopExp_Explorer e(box, TopAbs_EDGE); e.More(); e.Next()) fillet.Add(2.0, TopoDS::Edge(e.Current()));
+  return fillet.Shape();
+}
+
+// Random points in the box grown by 20 %, points on faces (at their UV
+// box's interior points that the face holds), on edges and at vertices, and
+// each of those moved off by 1e-3 and 1e-12 along a random direction.
+std::vector<gp_Pnt> probePoints(const TopoDS_Shape& shape, std::mt19937& random) {
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box);
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  std::uniform_real_distribution<double> unit(0, 1), signedUnit(-1, 1);
+  std::vector<gp_Pnt> points, onBoundary;
+  for (int k = 0; k < 600; ++k)
+    points.emplace_back(x0 - 0.2 * (x1 - x0) + 1.4 * (x1 - x0) * unit(random),
+                        y0 - 0.2 * (y1 - y0) + 1.4 * (y1 - y0) * unit(random),
+                        z0 - 0.2 * (z1 - z0) + 1.4 * (z1 - z0) * unit(random));
+  for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
+    const TopoDS_Face& face = TopoDS::Face(f.Current());
+    const BRepAdaptor_Surface surface(face);
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    for (int k = 0; k < 6; ++k) onBoundary.push_back(surface.Value(u0 + (u1 - u0) * unit(random), v0 + (v1 - v0) * unit(random)));
+  }
+  for (TopExp_Explorer e(shape, TopAbs_EDGE); e.More(); e.Next()) {
+    const BRepAdaptor_Curve curve(TopoDS::Edge(e.Current()));
+    onBoundary.push_back(curve.Value(curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * unit(random)));
+  }
+  for (TopExp_Explorer v(shape, TopAbs_VERTEX); v.More(); v.Next()) onBoundary.push_back(BRep_Tool::Pnt(TopoDS::Vertex(v.Current())));
+  for (const gp_Pnt& p : onBoundary) {
+    points.push_back(p);
+    for (double step : {1e-3, 1e-12}) {
+      gp_Vec d(signedUnit(random), signedUnit(random), signedUnit(random));
+      if (d.Magnitude() < 1e-3) continue;
+      points.push_back(p.Translated(d.Normalized() * step));
+    }
+  }
+  return points;
+}
+
+void expectSameStatesAsOcct(const TopoDS_Shape& shape, const char* name) {
+  std::mt19937 random(3);
+  SolidPointClassifier ours(shape);
+  BRepClass3d_SolidClassifier occt(shape);
+  std::size_t asked = 0, inside = 0, on = 0;
+  for (const gp_Pnt& p : probePoints(shape, random)) {
+    occt.Perform(p, 1e-9);
+    const TopAbs_State expected = occt.State();
+    EXPECT_EQ(ours.classify(p, 1e-9), expected) << name << " at " << p.X() << ", " << p.Y() << ", " << p.Z();
+    ++asked;
+    inside += expected == TopAbs_IN;
+    on += expected == TopAbs_ON;
+  }
+  EXPECT_GT(inside, asked / 10) << name;
+  EXPECT_GT(on, 20u) << name;
+  EXPECT_LT(ours.fallbacks(), asked / 20) << name;  // the rays answer nearly all
+}
+
+}  // namespace
+
+TEST(SolidPointClassifier, SameStatesAsOcctsClassifier) {
+  expectSameStatesAsOcct(plateWithHoles(), "plate with 16 holes");
+  expectSameStatesAsOcct(filletedBox(), "filleted box");
+  expectSameStatesAsOcct(BRepBuilderAPI_NurbsConvert(filletedBox()).Shape(), "B-spline filleted box");
+  expectSameStatesAsOcct(BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(1, 2, 3), gp_Dir(0, 0, 1)), 15.0, 4.0).Shape(), "torus");
+}
