@@ -1,7 +1,8 @@
 // Inner / outer label of every Delaunay cell for the pair-mesh (DESIGN.md §5):
 // a cell is inner iff its Voronoi vertex (circumcenter) lies inside the solid,
-// decided by OCCT's exact classifier (BRepClass3d_SolidClassifier). Points on
-// the boundary (within `onTolerance`) count as outer.
+// decided by the exact classifier (SolidPointClassifier: the answers of
+// OCCT's BRepClass3d_SolidClassifier, faster on many faces). Points on the
+// boundary (within `onTolerance`) count as outer.
 #pragma once
 
 // CGAL (delaunay.hpp) before OCCT: OCCT's Handle macro breaks CGAL.
@@ -16,7 +17,7 @@ namespace cadmedial {
 
 struct CellClassification {
   std::vector<std::uint8_t> inner;  // per cell id
-  std::size_t exactQueries = 0;     // cells sent to the OCCT classifier
+  std::size_t exactQueries = 0;     // cells sent to the exact classifier
   std::size_t decidedByMesh = 0;    // cells decided by the reconstruction
   std::size_t rayCasts = 0;         // ray parity tests on the reconstruction (one per group of cells)
   std::size_t segmentTests = 0;     // centre-to-centre segments tested against the reconstruction
@@ -35,8 +36,8 @@ struct CellClassification {
 // reconstruction as of the solid, and takes the reconstruction's side
 // (core/reconstruction_sides.hpp: groups of cells linked by centre-to-centre
 // segments that cross no triangle, one exact ray parity test per group).
-// Only the others go to the OCCT classifier. Without triangleDeviation a
-// uniform `band` stands for it (0: every cell goes to OCCT).
+// Only the others go to the exact classifier. Without triangleDeviation a
+// uniform `band` stands for it (0: every cell goes to the exact classifier).
 CellClassification classifyCellsBySolid(const DelaunayVoronoi& dv, const TopoDS_Shape& solid,
                                         const SampleSet* samples = nullptr, double band = 0,
                                         double onTolerance = 1e-9);
