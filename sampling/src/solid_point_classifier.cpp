@@ -56,26 +56,30 @@ TopAbs_State SolidPointClassifier::classify(const gp_Pnt& p, double tolerance) {
   nearEdges.SetCurrentPoint(p);
   if (explorer_.GetTree().Select(nearEdges) > 0) return TopAbs_ON;
 
-  // The rays start a little behind the point: a hit at the point itself
-  // (on a face) is then inside the searched segment, where the B-spline
-  // intersector finds it (at the segment's very start it can miss it).
+  // The rays start a little behind the point, so that a hit at the point
+  // itself (on a face) lies inside the searched segment rather than at its
+  // end, where the polyhedron-based B-spline search is least sure (a
+  // precaution: the test points on faces pass without it too).
   const double onReach = std::max(tolerance, 0.0);
   const double behind = onReach + 1e-6 * diagonal_;
+  // A solid without faces is the whole space to OCCT: its classifier says so.
   for (const gp_Dir& direction : rayDirections()) {
+    if (rays_.faceCount() == 0) break;
     if (!rays_.cast(gp_Lin(p, direction), -behind, 1e300, hits_)) continue;
     bool clean = true, on = false;
     const SolidRayCaster::Hit* previous = nullptr;
+    IntCurveSurface_TransitionOnCurve first = IntCurveSurface_Tangent;  // of the first hit ahead
     for (const SolidRayCaster::Hit& hit : hits_) {
       if (std::abs(hit.w) <= onReach) on = true;
       if (hit.w <= onReach) continue;  // behind the point
       clean = clean && !hit.onEdge && hit.transition != IntCurveSurface_Tangent &&
               (!previous || hit.transition != previous->transition) && !grazes(hit, direction);
-      if (!previous) first_ = hit.transition;
+      if (!previous) first = hit.transition;
       previous = &hit;
     }
     if (on) return TopAbs_ON;
     if (!clean || (previous && previous->transition != IntCurveSurface_Out)) continue;
-    return previous && first_ == IntCurveSurface_Out ? TopAbs_IN : TopAbs_OUT;
+    return previous && first == IntCurveSurface_Out ? TopAbs_IN : TopAbs_OUT;
   }
   ++fallbacks_;
   occt_.Perform(explorer_, p, tolerance);

@@ -56,7 +56,6 @@ class SolidPointClassifier {
   std::vector<std::unique_ptr<BRepAdaptor_Surface>> surfaces_;  // per face, for the normals at hits
   std::size_t fallbacks_ = 0;
   double diagonal_ = 0;  // of the solid's box: how far behind the point the rays start
-  IntCurveSurface_TransitionOnCurve first_ = IntCurveSurface_Tangent;  // of the first hit ahead
 };
 
 }  // namespace cadmedial
