@@ -128,10 +128,6 @@ void warnAboutUnresolvedCurves(const SamplingContext& ctx, const SamplingParams&
                           fraction * radius, report);
 }
 
-}  // namespace
-
-namespace {
-
 double defaultSpacingIn(const Bnd_Box& box) {
   if (box.IsVoid()) return 1.0;
   return kDefaultSpacingFraction * std::sqrt(box.SquareExtent());
