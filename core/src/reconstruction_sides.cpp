@@ -102,6 +102,9 @@ ReconstructionSides reconstructionSides(const SoupTree& mesh, const DelaunayVoro
       // the cube below. Both cubes are grown by 1e-6 of their half-side and
       // by the rounding of the centre's coordinates, so a triangle at d_t
       // (1 + 1e-9) from it, which the test below counts as near, is in them.
+      // (The squared distance of a large triangle is rounded by ~eps L²: one
+      // truly beyond the grown cube could pass that test from the old cube of
+      // the largest deviation; its centre is not near now, as it truly is not.)
       const double rounding = 1e-12 * (std::abs(p.x()) + std::abs(p.y()) + std::abs(p.z()));
       auto cubeAround = [&](double half) {
         half = half * (1 + 1e-6) + rounding;

@@ -33,6 +33,50 @@ SolidPointClassifier::SolidPointClassifier(const TopoDS_Shape& solid)
   BRepBndLib::Add(solid, box);
   diagonal_ = box.IsVoid() ? 0 : std::sqrt(box.SquareExtent());
   surfaces_.resize(static_cast<std::size_t>(rays_.faceCount()));
+  // A ray that meets nothing says OUT only if the solid's outside is
+  // outside: a clean ray from beyond its box must first enter it. An
+  // inverted solid (its faces turned inwards), or one no clean ray tells,
+  // is left to OCCT's classifier for every query.
+  if (box.IsVoid()) return;
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  const gp_Pnt centre((x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2);
+  for (const gp_Dir& direction : rayDirections()) {
+    const gp_Pnt far = centre.Translated(-gp_Vec(direction) * diagonal_);  // beyond the box
+    IntCurveSurface_TransitionOnCurve first = IntCurveSurface_Tangent;
+    if (cleanRay(far, direction, 0, first) == RaySays::Clean && first != IntCurveSurface_Tangent) {
+      outsideIsOut_ = first == IntCurveSurface_In;  // a hit, and the first one enters
+      break;
+    }
+  }
+}
+
+// Casts from p along `direction`; `first` gets the transition of the first
+// hit beyond `onReach` (Tangent if none).
+SolidPointClassifier::RaySays SolidPointClassifier::cleanRay(const gp_Pnt& p, const gp_Dir& direction, double onReach,
+                                                            IntCurveSurface_TransitionOnCurve& first) {
+  // The rays start a little behind the point, so that a hit at the point
+  // itself (on a face) lies inside the searched segment rather than at its
+  // end, where the polyhedron-based B-spline search is least sure (a
+  // precaution: the test points on faces pass without it too).
+  if (!rays_.cast(gp_Lin(p, direction), -(onReach + 1e-6 * diagonal_), 1e300, hits_)) return RaySays::Unclean;
+  bool clean = true, on = false;
+  const SolidRayCaster::Hit* previous = nullptr;
+  for (const SolidRayCaster::Hit& hit : hits_) {
+    if (std::abs(hit.w) <= onReach) on = true;
+    if (hit.w <= onReach) continue;  // behind the point
+    // An internal or external face does not part inside from outside (and
+    // its transition is the bare surface's): not counted, so not used.
+    const TopAbs_Orientation orientation = rays_.face(hit.face).Orientation();
+    clean = clean && !hit.onEdge && hit.transition != IntCurveSurface_Tangent &&
+            (orientation == TopAbs_FORWARD || orientation == TopAbs_REVERSED) &&
+            (!previous || hit.transition != previous->transition) && !grazes(hit, direction);
+    if (!previous) first = hit.transition;
+    previous = &hit;
+  }
+  if (on) return RaySays::On;
+  if (!clean || (previous && previous->transition != IntCurveSurface_Out)) return RaySays::Unclean;
+  return RaySays::Clean;
 }
 
 // A ray nearly along the surface where it crosses can miss a second
@@ -56,30 +100,16 @@ TopAbs_State SolidPointClassifier::classify(const gp_Pnt& p, double tolerance) {
   nearEdges.SetCurrentPoint(p);
   if (explorer_.GetTree().Select(nearEdges) > 0) return TopAbs_ON;
 
-  // The rays start a little behind the point, so that a hit at the point
-  // itself (on a face) lies inside the searched segment rather than at its
-  // end, where the polyhedron-based B-spline search is least sure (a
-  // precaution: the test points on faces pass without it too).
-  const double onReach = std::max(tolerance, 0.0);
-  const double behind = onReach + 1e-6 * diagonal_;
-  // A solid without faces is the whole space to OCCT: its classifier says so.
-  for (const gp_Dir& direction : rayDirections()) {
-    if (rays_.faceCount() == 0) break;
-    if (!rays_.cast(gp_Lin(p, direction), -behind, 1e300, hits_)) continue;
-    bool clean = true, on = false;
-    const SolidRayCaster::Hit* previous = nullptr;
-    IntCurveSurface_TransitionOnCurve first = IntCurveSurface_Tangent;  // of the first hit ahead
-    for (const SolidRayCaster::Hit& hit : hits_) {
-      if (std::abs(hit.w) <= onReach) on = true;
-      if (hit.w <= onReach) continue;  // behind the point
-      clean = clean && !hit.onEdge && hit.transition != IntCurveSurface_Tangent &&
-              (!previous || hit.transition != previous->transition) && !grazes(hit, direction);
-      if (!previous) first = hit.transition;
-      previous = &hit;
+  // Rays only where the outside was found to be outside (not on an inverted
+  // solid, nor on one without faces: the whole space to OCCT).
+  if (outsideIsOut_) {
+    const double onReach = std::max(tolerance, 0.0);
+    for (const gp_Dir& direction : rayDirections()) {
+      IntCurveSurface_TransitionOnCurve first = IntCurveSurface_Tangent;
+      const RaySays says = cleanRay(p, direction, onReach, first);
+      if (says == RaySays::On) return TopAbs_ON;
+      if (says == RaySays::Clean) return first == IntCurveSurface_Out ? TopAbs_IN : TopAbs_OUT;
     }
-    if (on) return TopAbs_ON;
-    if (!clean || (previous && previous->transition != IntCurveSurface_Out)) continue;
-    return previous && first == IntCurveSurface_Out ? TopAbs_IN : TopAbs_OUT;
   }
   ++fallbacks_;
   occt_.Perform(explorer_, p, tolerance);

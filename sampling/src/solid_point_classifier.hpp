@@ -14,10 +14,15 @@
 // tolerance of the point is ON; the ray is used only when it is clean: no
 // hit on a face's boundary (within its tolerances), tangent or grazing (within
 // ~6° of the surface), transitions
-// alternating and the last one leaving the solid. The first hit's
-// transition then says the side (leaving: inside; none: outside). When no
-// direction gives a clean ray (the point on an edge's extension, an
-// inverted solid), OCCT's classifier decides, with the same explorer.
+// alternating, the last one leaving the solid, none on an internal or
+// external face. The first hit's transition then says the side (leaving:
+// inside; none: outside). When no direction gives a clean ray (the point on
+// an edge's extension), and for every query on a solid whose outside a
+// clean ray from beyond its box does not find outside (an inverted solid),
+// OCCT's classifier decides, with the same explorer. ON means a face hit
+// within `tolerance` along the first clean-or-on ray (a glancing ray can
+// put a point that near a face farther along it), or within an edge's or
+// vertex's own tolerance.
 #pragma once
 
 #include <cstddef>
@@ -40,13 +45,14 @@ namespace cadmedial {
 class SolidPointClassifier {
  public:
   explicit SolidPointClassifier(const TopoDS_Shape& solid);
-  // IN, OUT or ON (within `tolerance` of a face, or within an edge's or
-  // vertex's own tolerance), like BRepClass3d_SolidClassifier::Perform.
+  // IN, OUT or ON (see above), like BRepClass3d_SolidClassifier::Perform.
   TopAbs_State classify(const gp_Pnt& p, double tolerance);
   // Queries that OCCT's classifier answered (no clean ray).
   std::size_t fallbacks() const { return fallbacks_; }
 
  private:
+  enum class RaySays { Clean, Unclean, On };
+  RaySays cleanRay(const gp_Pnt& p, const gp_Dir& direction, double onReach, IntCurveSurface_TransitionOnCurve& first);
   bool grazes(const SolidRayCaster::Hit& hit, const gp_Dir& direction);
 
   BRepClass3d_SolidExplorer explorer_;
@@ -56,6 +62,7 @@ class SolidPointClassifier {
   std::vector<std::unique_ptr<BRepAdaptor_Surface>> surfaces_;  // per face, for the normals at hits
   std::size_t fallbacks_ = 0;
   double diagonal_ = 0;  // of the solid's box: how far behind the point the rays start
+  bool outsideIsOut_ = false;  // a clean ray from beyond the box entered the solid first
 };
 
 }  // namespace cadmedial

@@ -1,7 +1,9 @@
 #include "solid_ray_caster.hpp"
 
 #include <algorithm>
+#include <cmath>
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
 #include <TopExp_Explorer.hxx>
@@ -22,14 +24,19 @@ SolidRayCaster::SolidRayCaster(const TopoDS_Shape& shape, double tolerance, bool
   shared->nearEdgesToo = nearEdgesToo;
   for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) {
     const TopoDS_Face& face = TopoDS::Face(ex.Current());
+    // A box from the geometry bounds a plane face (its edges' boxes) and a
+    // cylinder, cone, sphere or torus patch (analytic bounds), grown by the
+    // tolerances. Other surfaces (B-spline, Bezier, extrusion, revolution,
+    // offset) get no box here: BndLib samples some of them, which can leave
+    // a sliver of the face outside, and their intersector rejects a ray by
+    // its own polyhedron's box first, as in the OCCT class.
     Bnd_Box box;
-    // From the geometry (a triangulation can lie inside a curved face;
-    // B-spline faces get their poles' box, which holds the surface), grown
-    // by the face's, edges' and vertices' tolerances: an ON answer lies
-    // within those of the face's boundary. (AddOptimal's tight boxes cost
-    // 1.5 s of particle-swarm search on the gear's B-spline faces.)
-    BRepBndLib::Add(face, box, false);
-    if (!box.IsVoid()) box.Enlarge(2 * tolerance + 1e-9 * std::sqrt(box.SquareExtent()));
+    const GeomAbs_SurfaceType type = BRepAdaptor_Surface(face, false).GetType();
+    if (type == GeomAbs_Plane || type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_Sphere ||
+        type == GeomAbs_Torus) {
+      BRepBndLib::Add(face, box, false);
+      if (!box.IsVoid()) box.Enlarge(2 * tolerance + 1e-9 * std::sqrt(box.SquareExtent()));
+    }
     shared->faces.push_back(face);
     shared->boxes.push_back(box);
   }
@@ -46,7 +53,7 @@ bool SolidRayCaster::cast(const gp_Lin& line, double wMin, double wMax, std::vec
   hits.clear();
   const Shared& s = *shared_;
   for (std::size_t f = 0; f < s.faces.size(); ++f) {
-    // A void box (a face without geometry) is asked, as the OCCT class would.
+    // A void box (no box made, or a face without geometry): asked.
     if (!s.boxes[f].IsVoid() && s.boxes[f].IsOut(line)) continue;
     std::unique_ptr<IntCurvesFace_Intersector>& mine = intersectors_[f];
     if (!mine) mine = std::make_unique<IntCurvesFace_Intersector>(s.faces[f], s.tolerance, true, s.nearEdgesToo);

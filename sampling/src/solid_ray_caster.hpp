@@ -6,10 +6,12 @@
 // face, and a plane or other analytic face hit outside its boundary
 // rebuilds a 2D face classifier (BRepTopAdaptor_FClass2d) for that one
 // answer whenever the face's edges have different tolerances: 60 % of the
-// sampling time on the public gear (72 teeth). Here a face is asked only
-// when the ray's line meets its bounding box (from its geometry, grown by
-// its tolerances and the ray's), its intersector is built the first time
-// it is asked, and a hit is kept when it lies in the face at zero UV
+// sampling time on the public gear (72 teeth). Here an analytic face (plane,
+// cylinder, cone, sphere, torus) is asked only when the ray's line meets its
+// bounding box (from its geometry, grown by its tolerances and the ray's;
+// other faces reject the ray by their own polyhedron's box, as there), each
+// face's intersector is built the first time it is asked, and a hit is kept
+// when it lies in the face at zero UV
 // tolerance (UseBToler off: the classifier is built once). The OCCT class
 // also keeps hits up to its edges' tolerances outside the face; a ray that
 // passes that close to an edge can miss a hit here (the thickness rays'
