@@ -14,21 +14,10 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
-#include <BRepAlgoAPI_Fuse.hxx>
-#include <BRepBuilderAPI_MakeEdge.hxx>
-#include <BRepBuilderAPI_MakeFace.hxx>
-#include <BRepBuilderAPI_MakeWire.hxx>
-#include <BRepPrimAPI_MakePrism.hxx>
-#include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
-#include <Geom_BezierCurve.hxx>
-#include <TColgp_Array1OfPnt.hxx>
-#include <gp_Ax1.hxx>
-#include <gp_Elips.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
-#include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
@@ -39,9 +28,12 @@
 #include <TopoDS.hxx>
 #include <gp_Ax2.hxx>
 
+#include "ray_test_shapes.hpp"
 #include "solid_point_classifier.hpp"
 
 using namespace cadmedial;
+using cadmedial::test::filletedBox;
+using cadmedial::test::revolvedAndExtruded;
 
 namespace {
 
@@ -56,12 +48,6 @@ TopoDS_Shape plateWithHoles() {  // 16 holes: faces with many wires
   return plate;
 }
 
-TopoDS_Shape filletedBox() {
-  const TopoDS_Shape box = BRepPrimAPI_MakeBox(30.0, 20.0, 10.0).Shape();
-  BRepFilletAPI_MakeFillet fillet(box);
-  for (TopExp_Explorer e(box, TopAbs_EDGE); e.More(); e.Next()) fillet.Add(2.0, TopoDS::Edge(e.Current()));
-  return fillet.Shape();
-}
 
 // Random points in the box grown by 20 %, points on faces (at their UV
 // box's interior points that the face holds), on edges and at vertices, and
@@ -100,25 +86,6 @@ std::vector<gp_Pnt> probePoints(const TopoDS_Shape& shape, std::mt19937& random)
   return points;
 }
 
-// A revolved profile (a surface of revolution from an ellipse arc) and an
-// extruded one (a surface of extrusion from a B-spline): faces that
-// BRepBndLib boxes by sampling.
-TopoDS_Shape revolvedAndExtruded() {
-  const gp_Elips ellipse(gp_Ax2(gp_Pnt(12, 0, 10), gp_Dir(0, 1, 0)), 6.0, 3.0);
-  const TopoDS_Edge arc = BRepBuilderAPI_MakeEdge(ellipse).Edge();
-  const TopoDS_Face disc = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(arc).Wire()).Face();
-  const TopoDS_Shape ring = BRepPrimAPI_MakeRevol(disc, gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 1.5 * M_PI).Shape();
-  TColgp_Array1OfPnt poles(1, 5);
-  poles.SetValue(1, gp_Pnt(-8, -5, 0));
-  poles.SetValue(2, gp_Pnt(-2, -9, 0));
-  poles.SetValue(3, gp_Pnt(6, -4, 0));
-  poles.SetValue(4, gp_Pnt(3, 6, 0));
-  poles.SetValue(5, gp_Pnt(-8, -5, 0));
-  const Handle(Geom_BezierCurve) curve = new Geom_BezierCurve(poles);
-  const TopoDS_Face loop = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(curve).Edge()).Wire()).Face();
-  const TopoDS_Shape prism = BRepPrimAPI_MakePrism(loop, gp_Vec(0, 0, 8)).Shape();
-  return BRepAlgoAPI_Fuse(ring, prism).Shape();
-}
 
 TopoDS_Shape boxWithVoid() {  // two shells: the outer box and a spherical void
   const TopoDS_Shape box = BRepPrimAPI_MakeBox(30.0, 30.0, 30.0).Shape();

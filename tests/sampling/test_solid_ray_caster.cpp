@@ -13,18 +13,7 @@
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
-#include <BRepAlgoAPI_Fuse.hxx>
-#include <BRepBuilderAPI_MakeEdge.hxx>
-#include <BRepBuilderAPI_MakeFace.hxx>
-#include <BRepBuilderAPI_MakeWire.hxx>
-#include <BRepPrimAPI_MakePrism.hxx>
-#include <BRepPrimAPI_MakeRevol.hxx>
-#include <Geom_BezierCurve.hxx>
-#include <TColgp_Array1OfPnt.hxx>
-#include <gp_Ax1.hxx>
-#include <gp_Elips.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
-#include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
@@ -33,9 +22,12 @@
 #include <TopoDS.hxx>
 #include <gp_Ax2.hxx>
 
+#include "ray_test_shapes.hpp"
 #include "solid_ray_caster.hpp"
 
 using namespace cadmedial;
+using cadmedial::test::filletedBox;
+using cadmedial::test::revolvedAndExtruded;
 
 namespace {
 
@@ -45,32 +37,7 @@ TopoDS_Shape boxWithHole() {
   return BRepAlgoAPI_Cut(box, hole).Shape();
 }
 
-TopoDS_Shape filletedBox() {
-  const TopoDS_Shape box = BRepPrimAPI_MakeBox(30.0, 20.0, 10.0).Shape();
-  BRepFilletAPI_MakeFillet fillet(box);
-  for (TopExp_Explorer e(box, TopAbs_EDGE); e.More(); e.Next()) fillet.Add(2.0, TopoDS::Edge(e.Current()));
-  return fillet.Shape();
-}
 
-// A surface of revolution (an ellipse arc turned 270°) fused with a surface
-// of extrusion (a closed Bezier curve pushed up): faces that BRepBndLib
-// boxes by sampling, so they are not boxed.
-TopoDS_Shape revolvedAndExtruded() {
-  const gp_Elips ellipse(gp_Ax2(gp_Pnt(12, 0, 10), gp_Dir(0, 1, 0)), 6.0, 3.0);
-  const TopoDS_Face disc =
-      BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(ellipse).Edge()).Wire()).Face();
-  const TopoDS_Shape ring = BRepPrimAPI_MakeRevol(disc, gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 1.5 * M_PI).Shape();
-  TColgp_Array1OfPnt poles(1, 5);
-  poles.SetValue(1, gp_Pnt(-8, -5, 0));
-  poles.SetValue(2, gp_Pnt(-2, -9, 0));
-  poles.SetValue(3, gp_Pnt(6, -4, 0));
-  poles.SetValue(4, gp_Pnt(3, 6, 0));
-  poles.SetValue(5, gp_Pnt(-8, -5, 0));
-  const Handle(Geom_BezierCurve) curve = new Geom_BezierCurve(poles);
-  const TopoDS_Face loop =
-      BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(curve).Edge()).Wire()).Face();
-  return BRepAlgoAPI_Fuse(ring, BRepPrimAPI_MakePrism(loop, gp_Vec(0, 0, 8)).Shape()).Shape();
-}
 
 // nearEdgesToo: the caster's intersectors are set up as OCCT's (edges'
 // tolerances widen the face), so the hits' states and transitions must

@@ -1,0 +1,16 @@
+// Shapes for the ray caster and point classifier tests (sampling/src/
+// solid_ray_caster.*, solid_point_classifier.*).
+#pragma once
+
+#include <TopoDS_Shape.hxx>
+
+namespace cadmedial::test {
+
+// A 30 x 20 x 10 box with every edge filleted (r 2): cylinders, spheres' blends.
+TopoDS_Shape filletedBox();
+// A surface of revolution (an ellipse arc turned 270°) fused with a surface
+// of extrusion (a closed Bezier curve pushed up): faces that BRepBndLib
+// boxes by sampling.
+TopoDS_Shape revolvedAndExtruded();
+
+}  // namespace cadmedial::test
