@@ -71,6 +71,7 @@ pth=${user_site:+$user_site/cadmedial-freecad-addon.pth}
 
 if [ "$uninstall" = 1 ]; then
   rm -rf "$target"
+  rm -f "$mod_dir/.MedialAxis.lock"
   [ -n "$pth" ] && rm -f "$pth"
   echo "removed $target${pth:+ and $pth}"
   exit 0
@@ -106,9 +107,17 @@ cp "$native" "$stage/cadmedial/"
 mkdir -p "$stage/python"
 ln -s ../cadmedial "$stage/python/cadmedial"
 
+# Two installs at once (the setup of two clones) would race on the swap: the
+# second `mv` of the old folder failed, or the stage landed inside the new
+# target. flock (util-linux) makes them take turns.
+if command -v flock >/dev/null 2>&1; then
+  exec 9>"$mod_dir/.MedialAxis.lock"
+  flock 9
+fi
 if [ -e "$target" ]; then mv "$target" "$old"; fi
 mv "$stage" "$target"
 rm -rf "$old"
+if command -v flock >/dev/null 2>&1; then flock -u 9; fi
 
 if [ "$python_path" = 1 ] && [ -n "$pth" ]; then
   mkdir -p "$user_site"
