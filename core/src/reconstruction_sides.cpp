@@ -115,7 +115,7 @@ ReconstructionSides reconstructionSides(const SoupTree& mesh, const DelaunayVoro
       // A point of triangle t within d_t of the centre is within reach(t)
       // of a sample, so the nearest sample (at the circumradius) would be
       // within d_t + reach(t): farther than that, no query.
-      const double margin = 1e-8 * dv.circumradius(c) + 1e-12 * (std::abs(x[0]) + std::abs(x[1]) + std::abs(x[2]));
+      const double margin = 1e-8 * dv.circumradius(c) + rounding;
       if (wellShaped[id] && dv.circumradius(c) - margin > 1.01 * (localDeviation + reachGrid.reachWithin(cube))) continue;
       // Near iff within d_t of some triangle t: the candidates are the
       // triangles whose boxes meet the cube.

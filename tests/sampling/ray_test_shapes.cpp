@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
@@ -11,6 +12,7 @@
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <Geom_BezierCurve.hxx>
+#include <Bnd_Box.hxx>
 #include <TColgp_Array1OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -42,6 +44,18 @@ TopoDS_Shape revolvedAndExtruded() {
   const TopoDS_Face loop =
       BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(curve).Edge()).Wire()).Face();
   return BRepAlgoAPI_Fuse(ring, BRepPrimAPI_MakePrism(loop, gp_Vec(0, 0, 8)).Shape()).Shape();
+}
+
+std::vector<gp_Pnt> pointsAround(const TopoDS_Shape& shape, int count, std::mt19937& random) {
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box);
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  std::uniform_real_distribution<double> share(-0.2, 1.2);
+  std::vector<gp_Pnt> points;
+  for (int k = 0; k < count; ++k)
+    points.emplace_back(x0 + (x1 - x0) * share(random), y0 + (y1 - y0) * share(random), z0 + (z1 - z0) * share(random));
+  return points;
 }
 
 }  // namespace cadmedial::test

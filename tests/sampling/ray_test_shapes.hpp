@@ -2,7 +2,11 @@
 // solid_ray_caster.*, solid_point_classifier.*).
 #pragma once
 
+#include <random>
+#include <vector>
+
 #include <TopoDS_Shape.hxx>
+#include <gp_Pnt.hxx>
 
 namespace cadmedial::test {
 
@@ -12,5 +16,8 @@ TopoDS_Shape filletedBox();
 // of extrusion (a closed Bezier curve pushed up): faces that BRepBndLib
 // boxes by sampling.
 TopoDS_Shape revolvedAndExtruded();
+
+// `count` points uniform in the shape's bounding box grown by 20 % each way.
+std::vector<gp_Pnt> pointsAround(const TopoDS_Shape& shape, int count, std::mt19937& random);
 
 }  // namespace cadmedial::test

@@ -15,7 +15,6 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
-#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -23,7 +22,6 @@
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
-#include <Bnd_Box.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <gp_Ax2.hxx>
@@ -53,16 +51,8 @@ TopoDS_Shape plateWithHoles() {  // 16 holes: faces with many wires
 // box's interior points that the face holds), on edges and at vertices, and
 // each of those moved off by 1e-3 and 1e-12 along a random direction.
 std::vector<gp_Pnt> probePoints(const TopoDS_Shape& shape, std::mt19937& random) {
-  Bnd_Box box;
-  BRepBndLib::Add(shape, box);
-  double x0, y0, z0, x1, y1, z1;
-  box.Get(x0, y0, z0, x1, y1, z1);
   std::uniform_real_distribution<double> unit(0, 1), signedUnit(-1, 1);
-  std::vector<gp_Pnt> points, onBoundary;
-  for (int k = 0; k < 600; ++k)
-    points.emplace_back(x0 - 0.2 * (x1 - x0) + 1.4 * (x1 - x0) * unit(random),
-                        y0 - 0.2 * (y1 - y0) + 1.4 * (y1 - y0) * unit(random),
-                        z0 - 0.2 * (z1 - z0) + 1.4 * (z1 - z0) * unit(random));
+  std::vector<gp_Pnt> points = cadmedial::test::pointsAround(shape, 600, random), onBoundary;
   for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
     const TopoDS_Face& face = TopoDS::Face(f.Current());
     const BRepAdaptor_Surface surface(face);

@@ -11,8 +11,6 @@
 #include <vector>
 
 #include <BRepAlgoAPI_Cut.hxx>
-#include <BRepBndLib.hxx>
-#include <Bnd_Box.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -48,18 +46,15 @@ void expectSameHitsAsOcct(const TopoDS_Shape& shape, const char* name, bool near
   occt.Load(shape, kTolerance);
   SolidRayCaster caster(shape, kTolerance, nearEdgesToo);
   std::mt19937 random(7);
-  Bnd_Box box;  // rays from points in the shape's box grown by 20 %
-  BRepBndLib::Add(shape, box);
-  double x0, y0, z0, x1, y1, z1;
-  box.Get(x0, y0, z0, x1, y1, z1);
-  std::uniform_real_distribution<double> unit(-1, 1), share(-0.2, 1.2);
+  // Rays from points in the shape's box grown by 20 %.
+  const std::vector<gp_Pnt> origins = cadmedial::test::pointsAround(shape, 1500, random);
+  std::uniform_real_distribution<double> unit(-1, 1);
   std::vector<SolidRayCaster::Hit> hits;
   std::size_t rays = 0, totalHits = 0;
   for (int k = 0; k < 1500; ++k) {
     const gp_Vec d(unit(random), unit(random), unit(random));
     if (d.Magnitude() < 0.1) continue;
-    const gp_Lin line(gp_Pnt(x0 + (x1 - x0) * share(random), y0 + (y1 - y0) * share(random), z0 + (z1 - z0) * share(random)),
-                      gp_Dir(d));
+    const gp_Lin line(origins[static_cast<std::size_t>(k)], gp_Dir(d));
     occt.Perform(line, 1e-6, 1e300);
     ASSERT_TRUE(occt.IsDone());
     ASSERT_TRUE(caster.cast(line, 1e-6, 1e300, hits));
