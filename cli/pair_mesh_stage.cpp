@@ -50,14 +50,14 @@ nlohmann::json pairMeshReport(const PairMesh& mesh, const TopoDS_Shape& solid) {
 }
 
 PairMeshStage buildPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& samples, const TopoDS_Shape& solid,
-                                 const MedialComplex& axis) {
+                                 const MedialComplex& axis, const CellSideInputs* prepared) {
   PairMeshStage stage;
   auto t = Clock::now();
   // Centres farther from every reconstruction triangle than its measured
   // deviation from the exact surface take the reconstruction's side; the
   // rest go to OCCT's classifier (h/2 is the band only for sample sets
   // without triangleDeviation).
-  const CellClassification cells = classifyCellsBySolid(dv, solid, &samples, 0.5 * samples.spacing);
+  const CellClassification cells = classifyCellsBySolid(dv, solid, &samples, 0.5 * samples.spacing, 1e-9, prepared);
   const double classifySeconds = secondsSince(t);
   stage.mesh = buildPairMesh(dv, samples, cells.inner, &axis);
   const PairMesh& mesh = stage.mesh;

@@ -25,8 +25,10 @@ struct PairMeshStage {
   PairMesh mesh;
   nlohmann::json report;  // pairMeshReport + labels, repair counts, times
 };
+// prepared: the CAD_MEDIAL run's cell-side inputs on the same samples and dv,
+// if it made them (their tree and link groups serve the labels too).
 PairMeshStage buildPairMeshStage(const DelaunayVoronoi& dv, const SampleSet& samples, const TopoDS_Shape& solid,
-                                 const MedialComplex& axis);
+                                 const MedialComplex& axis, const CellSideInputs* prepared = nullptr);
 
 // Writes pairmesh.vtu, pairmesh.node/.ele and iso_<t>.ply for each t into
 // dir; adds "iso_files" and seconds.write to stage.report.

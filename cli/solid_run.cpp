@@ -106,7 +106,8 @@ SolidResult attempt(const TopoDS_Shape& solid, const SamplingParams& sampling, c
   run.secondsAxis = secondsSince(start);
   if (pairMesh) {
     call(stage, "pair_mesh");
-    run.pairMesh = buildPairMeshStage(*triangulated.triangulation, samples, solid, run.medial);
+    run.pairMesh = buildPairMeshStage(*triangulated.triangulation, samples, solid, run.medial,
+                                      triangulated.prepared->cellSides.get());
     run.pairMesh->report["spacing"] = samples.spacing;
   }
   run.sampled = std::move(triangulated.sampled);

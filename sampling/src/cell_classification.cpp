@@ -19,7 +19,7 @@
 namespace cadmedial {
 
 CellClassification classifyCellsBySolid(const DelaunayVoronoi& dv, const TopoDS_Shape& solid, const SampleSet* samples,
-                                        double band, double onTolerance) {
+                                        double band, double onTolerance, const CellSideInputs* prepared) {
   CellClassification out;
   out.inner.assign(dv.cellCount(), 0);
   Bnd_Box box;
@@ -39,14 +39,17 @@ CellClassification classifyCellsBySolid(const DelaunayVoronoi& dv, const TopoDS_
   // Side of the reconstruction where it is closed and the centre is farther
   // from each triangle than that triangle's deviation from the exact surface
   // (SampleSet::triangleDeviation, else the uniform band).
+  // (The prepared inputs hold a tree exactly when the reconstruction is
+  // closed and manifold: the same check.)
   std::vector<std::uint8_t> meshSide;
   if (samples && !samples->triangles.empty() &&
       (band > 0 || samples->triangleDeviation.size() == samples->triangles.size()) &&
-      checkSurfaceMesh(samples->points, samples->triangles).closedManifold()) {
+      (prepared ? prepared->mesh != nullptr : checkSurfaceMesh(samples->points, samples->triangles).closedManifold())) {
     const std::vector<double> deviation = samples->triangleDeviation.size() == samples->triangles.size()
                                               ? samples->triangleDeviation
                                               : std::vector<double>(samples->triangles.size(), band);
-    ReconstructionSides sides = reconstructionSides(dv, *samples, deviation, &wanted);
+    ReconstructionSides sides = prepared ? reconstructionSides(dv, *prepared, deviation, &wanted)
+                                         : reconstructionSides(dv, *samples, deviation, &wanted);
     out.rayCasts = sides.rayCasts;
     out.segmentTests = sides.segmentTests;
     out.nearSeconds = sides.nearSeconds;

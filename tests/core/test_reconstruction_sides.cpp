@@ -10,6 +10,7 @@
 #include <random>
 
 #include "cadmedial/delaunay.hpp"
+#include "cadmedial/cell_sides.hpp"
 #include "cadmedial/reconstruction_sides.hpp"
 #include "synthetic_samples.hpp"
 #include "triangle_reach_grid.hpp"
@@ -201,4 +202,41 @@ TEST(ReconstructionSides, GridDeviationBoundsEveryTriangleWithinItsDeviation) {
   EXPECT_EQ(grid.deviationWithin(CGAL::Bbox_3(500, 500, 500, 501, 501, 501)), 0.0);
   EXPECT_EQ(soup::TriangleReachGrid(triangles).deviationWithin(CGAL::Bbox_3(0, 0, 0, 1, 1, 1)),
             std::numeric_limits<double>::infinity());
+}
+
+// The link groups do not depend on the deviations: the ones CellSideInputs
+// keeps (made by the zero-band question of the CAD_MEDIAL cell sides) give
+// the pair-mesh labels' band exactly the answers of groups made afresh. The
+// groups are made once per Delaunay, and again for another one.
+TEST(ReconstructionSides, SharedLinkGroupsGiveTheAnswersOfFreshOnes) {
+  SamplingOptions options;
+  options.spacing = 0.1;
+  const SampleSet samples = samplePlanarSolid(makeBoxWithSquareHole(), options);
+  const DelaunayVoronoi dv(samples.points);
+  const CellSideInputs inputs(samples);
+  ASSERT_NE(inputs.mesh, nullptr);
+  std::vector<std::uint8_t> ring(dv.cellCount(), 0);
+  for (Index c = 0; c < dv.cellCount(); c += 3) ring[c] = 1;
+  for (const double band : {0.0, 0.02, 0.07}) {
+    const std::vector<double> deviation(samples.triangles.size(), band);
+    const std::vector<std::uint8_t>* everyCell = nullptr;
+    const std::vector<std::uint8_t>* someCells = &ring;
+    for (const std::vector<std::uint8_t>* wanted : {everyCell, someCells}) {
+      const ReconstructionSides fresh = reconstructionSides(dv, samples, deviation, wanted);
+      const ReconstructionSides shared = reconstructionSides(dv, inputs, deviation, wanted);
+      EXPECT_EQ(shared.side, fresh.side) << "band " << band;
+      EXPECT_EQ(shared.groups, fresh.groups);
+      EXPECT_EQ(shared.rayCasts, fresh.rayCasts);
+      EXPECT_GT(fresh.groups, 1u);
+    }
+  }
+  const ReconstructionLinks* links = inputs.links(dv);
+  ASSERT_NE(links, nullptr);
+  EXPECT_EQ(inputs.links(dv), links);  // kept, not made again
+  EXPECT_EQ(links->group.size(), dv.cellCount());
+  // Another Delaunay (fewer points): its own groups, one per cell.
+  std::vector<Vec3> fewer(samples.points.begin(), samples.points.begin() + samples.points.size() / 2);
+  const DelaunayVoronoi other(fewer);
+  EXPECT_EQ(inputs.links(other)->group.size(), other.cellCount());
+  EXPECT_EQ(inputs.links(dv)->group.size(), dv.cellCount());
 }

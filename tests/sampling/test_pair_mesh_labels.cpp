@@ -58,6 +58,14 @@ LabelCheck checkLabels(const TopoDS_Shape& solid, const std::string& name, doubl
   LabelCheck out;
   out.labelSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.exactQueries = fast.exactQueries;
+  // The same labels through inputs prepared as for a CAD_MEDIAL run (its
+  // surface check, tree and link groups, which `run --pair-mesh` shares).
+  const CellSideInputs prepared(sampled.samples);
+  const CellClassification shared =
+      classifyCellsBySolid(dv, solid, &sampled.samples, 0.5 * sampled.samples.spacing, 1e-9, &prepared);
+  EXPECT_EQ(shared.inner, fast.inner) << name;
+  EXPECT_EQ(shared.exactQueries, fast.exactQueries) << name;
+  EXPECT_EQ(shared.rayCasts, fast.rayCasts) << name;
 
   std::vector<Index> cells;
   for (Index c = 0; c < dv.cellCount(); ++c)

@@ -5,9 +5,11 @@
 
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "cadmedial/delaunay.hpp"
+#include "cadmedial/reconstruction_sides.hpp"
 #include "cadmedial/sample_set.hpp"
 
 namespace cadmedial {
@@ -63,7 +65,26 @@ struct CellSideInputs {
 
   std::vector<Vec3> normals;              // outwardSampleNormals
   std::unique_ptr<soup::SoupTree> mesh;   // null unless the reconstruction is closed and manifold
+
+  // The cells' link groups over dv (reconstruction_sides.hpp), made on the
+  // first call and kept for the next calls on the same dv (same object and
+  // cell count: the inputs live beside one triangulation of their samples),
+  // so the CAD_MEDIAL cell sides and the pair-mesh labels link once. Null
+  // without `mesh`. Safe to call from several threads.
+  const ReconstructionLinks* links(const DelaunayVoronoi& dv) const;
+
+ private:
+  mutable std::mutex linksMutex_;
+  mutable const DelaunayVoronoi* linksOf_ = nullptr;
+  mutable std::unique_ptr<ReconstructionLinks> links_;
 };
+
+// reconstructionSides (reconstruction_sides.hpp) on inputs built from the
+// same samples, with their tree and link groups; every cell
+// kReconstructionSkipped when inputs.mesh is null (not closed).
+ReconstructionSides reconstructionSides(const DelaunayVoronoi& dv, const CellSideInputs& inputs,
+                                        const std::vector<double>& deviation,
+                                        const std::vector<std::uint8_t>* wanted = nullptr);
 
 // The same, on inputs built beforehand from the same samples.
 std::vector<std::uint8_t> classifyCellSides(const DelaunayVoronoi& dv, const SampleSet& samples,

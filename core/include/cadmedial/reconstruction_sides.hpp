@@ -46,6 +46,16 @@ struct ReconstructionSides {
   double nearSeconds = 0, linkSeconds = 0, raySeconds = 0;
 };
 
+// The groups of cells above, for one Delaunay and one closed
+// reconstruction. They do not depend on the deviations, so one set serves
+// every side question on that Delaunay (CellSideInputs::links: the
+// CAD_MEDIAL cell sides and the pair-mesh labels).
+struct ReconstructionLinks {
+  std::vector<Index> group;  // per cell id: its group's root cell
+  std::size_t segmentTests = 0;
+  double seconds = 0;
+};
+
 // samples.triangles must form a closed manifold (checkSurfaceMesh); the
 // caller checks. dv is meant to be the Delaunay of samples.points: its
 // short cuts (reconstruction_sides.cpp) rely on the triangles' corners

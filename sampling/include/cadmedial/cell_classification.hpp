@@ -6,6 +6,7 @@
 #pragma once
 
 // CGAL (delaunay.hpp) before OCCT: OCCT's Handle macro breaks CGAL.
+#include "cadmedial/cell_sides.hpp"
 #include "cadmedial/delaunay.hpp"
 
 #include <cstdint>
@@ -38,8 +39,11 @@ struct CellClassification {
 // segments that cross no triangle, one exact ray parity test per group).
 // Only the others go to the exact classifier. Without triangleDeviation a
 // uniform `band` stands for it (0: every cell goes to the exact classifier).
+// `prepared`: the CellSideInputs built from the same samples for the
+// CAD_MEDIAL run on dv, if there is one; its surface check, tree and link
+// groups are used instead of new ones (same answers).
 CellClassification classifyCellsBySolid(const DelaunayVoronoi& dv, const TopoDS_Shape& solid,
                                         const SampleSet* samples = nullptr, double band = 0,
-                                        double onTolerance = 1e-9);
+                                        double onTolerance = 1e-9, const CellSideInputs* prepared = nullptr);
 
 }  // namespace cadmedial
