@@ -19,6 +19,8 @@
 //
 // Only in the executable: a module loaded into another process (the FreeCAD
 // workbench's Python module) does not replace that process's operator new.
+// Over-aligned blocks (operator new with std::align_val_t) keep the library's
+// allocation and get no advice; nothing large here asks for one.
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>

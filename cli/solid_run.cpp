@@ -97,6 +97,9 @@ SolidResult attempt(const TopoDS_Shape& solid, const SamplingParams& sampling, c
     };
   }
   const SampleSet& samples = triangulated.sampled.samples;
+  // The pair-mesh labels ask the cell sides' question again with another
+  // band: the link groups are kept for them (cell_sides.hpp).
+  if (pairMesh && triangulated.prepared->cellSides) triangulated.prepared->cellSides->keepLinks = true;
   // Outside only when clearly so: a centroid on the surface (within 1e-3 h)
   // keeps its facet.
   const double onSurface = 1e-3 * samples.spacing;

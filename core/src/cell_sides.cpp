@@ -9,7 +9,6 @@
 
 #include "cadmedial/reconstruction_sides.hpp"
 #include "cadmedial/surface_mesh_checks.hpp"
-#include "cadmedial/timer.hpp"
 
 namespace cadmedial {
 
@@ -72,14 +71,17 @@ CellSideInputs::CellSideInputs(const SampleSet& samples, std::vector<Vec3> sampl
 
 CellSideInputs::~CellSideInputs() = default;
 
-const ReconstructionLinks* CellSideInputs::links(const DelaunayVoronoi& dv) const {
-  if (!mesh) return nullptr;
+std::shared_ptr<const ReconstructionLinks> CellSideInputs::links(const DelaunayVoronoi& dv) const {
   const std::lock_guard<std::mutex> lock(linksMutex_);
-  if (!links_ || linksOf_ != &dv || links_->group.size() != dv.cellCount()) {
-    links_ = std::make_unique<ReconstructionLinks>(reconstructionLinks(*mesh, dv));
-    linksOf_ = &dv;
-  }
-  return links_.get();
+  if (!links_ || linksOf_ != &dv || links_->group.size() != dv.cellCount()) return nullptr;
+  return links_;
+}
+
+void CellSideInputs::keep(const DelaunayVoronoi& dv, ReconstructionLinks made) const {
+  auto kept = std::make_shared<const ReconstructionLinks>(std::move(made));
+  const std::lock_guard<std::mutex> lock(linksMutex_);
+  links_ = std::move(kept);
+  linksOf_ = &dv;
 }
 
 ReconstructionSides reconstructionSides(const DelaunayVoronoi& dv, const CellSideInputs& inputs,
@@ -90,11 +92,12 @@ ReconstructionSides reconstructionSides(const DelaunayVoronoi& dv, const CellSid
     out.side.assign(dv.cellCount(), kReconstructionSkipped);
     return out;
   }
-  Stopwatch watch;
-  const ReconstructionLinks* links = inputs.links(dv);
-  const double linkSeconds = watch.seconds();
-  ReconstructionSides out = reconstructionSides(*inputs.mesh, dv, deviation, wanted, links);
-  out.linkSeconds += linkSeconds;  // made here on the first call, looked up after
+  const std::shared_ptr<const ReconstructionLinks> kept = inputs.links(dv);
+  const bool keepNew = !kept && inputs.keepLinks;
+  ReconstructionLinks made;
+  ReconstructionSides out =
+      reconstructionSides(*inputs.mesh, dv, deviation, wanted, kept.get(), keepNew ? &made : nullptr);
+  if (keepNew) inputs.keep(dv, std::move(made));
   return out;
 }
 

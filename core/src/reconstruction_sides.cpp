@@ -142,13 +142,6 @@ ReconstructionLinks linkCells(const SoupTree& mesh, const DelaunayVoronoi& dv, c
 
 }  // namespace
 
-ReconstructionLinks reconstructionLinks(const SoupTree& mesh, const DelaunayVoronoi& dv) {
-  if (mesh.triangles.empty()) return {};
-  // (The reach per grid cell does not depend on the deviations.)
-  const TriangleReachGrid reachGrid(mesh.triangles, std::vector<double>(mesh.triangles.size(), 0.0));
-  return linkCells(mesh, dv, cellCentres(mesh, dv), reachGrid);
-}
-
 ReconstructionSides reconstructionSides(const DelaunayVoronoi& dv, const SampleSet& samples,
                                         const std::vector<double>& deviation,
                                         const std::vector<std::uint8_t>* wanted) {
@@ -167,7 +160,8 @@ ReconstructionSides reconstructionSides(const DelaunayVoronoi& dv, const SampleS
 
 ReconstructionSides reconstructionSides(const SoupTree& mesh, const DelaunayVoronoi& dv,
                                         const std::vector<double>& deviation,
-                                        const std::vector<std::uint8_t>* wanted, const ReconstructionLinks* links) {
+                                        const std::vector<std::uint8_t>* wanted, const ReconstructionLinks* links,
+                                        ReconstructionLinks* made) {
   const std::size_t m = dv.cellCount();
   ReconstructionSides out;
   Stopwatch watch;
@@ -247,15 +241,16 @@ ReconstructionSides reconstructionSides(const SoupTree& mesh, const DelaunayVoro
   out.nearSeconds = watch.seconds();
 
   // The groups, unless the caller has them (they do not depend on the
-  // deviations: CellSideInputs::links shares one set between the CAD_MEDIAL
-  // cell sides and the pair-mesh labels).
+  // deviations: CellSideInputs keeps one set for the CAD_MEDIAL cell sides
+  // and the pair-mesh labels). segmentTests: the tests that made them, here
+  // or before.
   ReconstructionLinks own;
   if (!links) {
     own = linkCells(mesh, dv, cells, reachGrid);
     links = &own;
-    out.segmentTests = own.segmentTests;
     out.linkSeconds = own.seconds;
   }
+  out.segmentTests = links->segmentTests;
   const std::vector<Index>& group = links->group;
   watch.restart();
 
@@ -296,6 +291,7 @@ ReconstructionSides reconstructionSides(const SoupTree& mesh, const DelaunayVoro
     }
   }
   out.raySeconds = watch.seconds();
+  if (made && links == &own) *made = std::move(own);
   return out;
 }
 

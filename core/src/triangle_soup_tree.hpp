@@ -91,13 +91,11 @@ namespace cadmedial {
 
 // reconstructionSides (reconstruction_sides.hpp) on a tree built by the
 // caller; with the cells' link groups when the caller has them for this
-// tree and dv (reconstructionLinks), else they are made here.
+// tree and dv, else they are made here (and moved into `made` if given).
 ReconstructionSides reconstructionSides(const soup::SoupTree& mesh, const DelaunayVoronoi& dv,
                                         const std::vector<double>& deviation,
                                         const std::vector<std::uint8_t>* wanted,
-                                        const ReconstructionLinks* links = nullptr);
-
-// The link groups alone (the same as reconstructionSides makes).
-ReconstructionLinks reconstructionLinks(const soup::SoupTree& mesh, const DelaunayVoronoi& dv);
+                                        const ReconstructionLinks* links = nullptr,
+                                        ReconstructionLinks* made = nullptr);
 
 }  // namespace cadmedial

@@ -206,37 +206,47 @@ TEST(ReconstructionSides, GridDeviationBoundsEveryTriangleWithinItsDeviation) {
 
 // The link groups do not depend on the deviations: the ones CellSideInputs
 // keeps (made by the zero-band question of the CAD_MEDIAL cell sides) give
-// the pair-mesh labels' band exactly the answers of groups made afresh. The
-// groups are made once per Delaunay, and again for another one.
-TEST(ReconstructionSides, SharedLinkGroupsGiveTheAnswersOfFreshOnes) {
+// the pair-mesh labels' band exactly the answers of groups made afresh. They
+// are kept only when asked for, and only for the Delaunay they were made on.
+TEST(ReconstructionSides, KeptLinkGroupsGiveTheAnswersOfFreshOnes) {
   SamplingOptions options;
   options.spacing = 0.1;
   const SampleSet samples = samplePlanarSolid(makeBoxWithSquareHole(), options);
   const DelaunayVoronoi dv(samples.points);
-  const CellSideInputs inputs(samples);
-  ASSERT_NE(inputs.mesh, nullptr);
+  const std::vector<double> zero(samples.triangles.size(), 0.0);
+
+  const CellSideInputs notKeeping(samples);
+  ASSERT_NE(notKeeping.mesh, nullptr);
+  reconstructionSides(dv, notKeeping, zero);
+  EXPECT_EQ(notKeeping.links(dv), nullptr);
+
+  CellSideInputs inputs(samples);
+  inputs.keepLinks = true;
+  const ReconstructionSides first = reconstructionSides(dv, inputs, zero);
+  const std::shared_ptr<const ReconstructionLinks> links = inputs.links(dv);
+  ASSERT_NE(links, nullptr);
+  EXPECT_EQ(links->group.size(), dv.cellCount());
+  EXPECT_EQ(first.side, reconstructionSides(dv, samples, zero).side);
   std::vector<std::uint8_t> ring(dv.cellCount(), 0);
   for (Index c = 0; c < dv.cellCount(); c += 3) ring[c] = 1;
+  const std::vector<std::uint8_t>* everyCell = nullptr;
+  const std::vector<std::uint8_t>* someCells = &ring;
   for (const double band : {0.0, 0.02, 0.07}) {
     const std::vector<double> deviation(samples.triangles.size(), band);
-    const std::vector<std::uint8_t>* everyCell = nullptr;
-    const std::vector<std::uint8_t>* someCells = &ring;
     for (const std::vector<std::uint8_t>* wanted : {everyCell, someCells}) {
       const ReconstructionSides fresh = reconstructionSides(dv, samples, deviation, wanted);
       const ReconstructionSides shared = reconstructionSides(dv, inputs, deviation, wanted);
       EXPECT_EQ(shared.side, fresh.side) << "band " << band;
       EXPECT_EQ(shared.groups, fresh.groups);
       EXPECT_EQ(shared.rayCasts, fresh.rayCasts);
+      EXPECT_EQ(shared.segmentTests, fresh.segmentTests);
+      EXPECT_EQ(shared.linkSeconds, 0.0);  // not linked again
       EXPECT_GT(fresh.groups, 1u);
     }
   }
-  const ReconstructionLinks* links = inputs.links(dv);
-  ASSERT_NE(links, nullptr);
-  EXPECT_EQ(inputs.links(dv), links);  // kept, not made again
-  EXPECT_EQ(links->group.size(), dv.cellCount());
-  // Another Delaunay (fewer points): its own groups, one per cell.
+  EXPECT_EQ(inputs.links(dv), links);  // still the first ones
+  // Another Delaunay (fewer points) has none kept.
   std::vector<Vec3> fewer(samples.points.begin(), samples.points.begin() + samples.points.size() / 2);
   const DelaunayVoronoi other(fewer);
-  EXPECT_EQ(inputs.links(other)->group.size(), other.cellCount());
-  EXPECT_EQ(inputs.links(dv)->group.size(), dv.cellCount());
+  EXPECT_EQ(inputs.links(other), nullptr);
 }

@@ -59,13 +59,18 @@ LabelCheck checkLabels(const TopoDS_Shape& solid, const std::string& name, doubl
   out.labelSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.exactQueries = fast.exactQueries;
   // The same labels through inputs prepared as for a CAD_MEDIAL run (its
-  // surface check, tree and link groups, which `run --pair-mesh` shares).
-  const CellSideInputs prepared(sampled.samples);
+  // surface check, tree and link groups, which `run --pair-mesh` shares),
+  // after its cell sides' question.
+  CellSideInputs prepared(sampled.samples);
+  prepared.keepLinks = true;
+  reconstructionSides(dv, prepared, std::vector<double>(sampled.samples.triangles.size(), 0.0));
+  EXPECT_TRUE(!prepared.mesh || prepared.links(dv)) << name;
   const CellClassification shared =
       classifyCellsBySolid(dv, solid, &sampled.samples, 0.5 * sampled.samples.spacing, 1e-9, &prepared);
   EXPECT_EQ(shared.inner, fast.inner) << name;
   EXPECT_EQ(shared.exactQueries, fast.exactQueries) << name;
   EXPECT_EQ(shared.rayCasts, fast.rayCasts) << name;
+  EXPECT_EQ(shared.segmentTests, fast.segmentTests) << name;
 
   std::vector<Index> cells;
   for (Index c = 0; c < dv.cellCount(); ++c)

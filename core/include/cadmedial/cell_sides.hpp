@@ -66,21 +66,29 @@ struct CellSideInputs {
   std::vector<Vec3> normals;              // outwardSampleNormals
   std::unique_ptr<soup::SoupTree> mesh;   // null unless the reconstruction is closed and manifold
 
-  // The cells' link groups over dv (reconstruction_sides.hpp), made on the
-  // first call and kept for the next calls on the same dv (same object and
-  // cell count: the inputs live beside one triangulation of their samples),
-  // so the CAD_MEDIAL cell sides and the pair-mesh labels link once. Null
-  // without `mesh`. Safe to call from several threads.
-  const ReconstructionLinks* links(const DelaunayVoronoi& dv) const;
+  // Whether reconstructionSides(dv, inputs, ...) keeps the cells' link
+  // groups it makes (reconstruction_sides.hpp) for the next question on the
+  // same dv. Set by a caller that asks twice: `run --pair-mesh` (the
+  // CAD_MEDIAL cell sides, then the pair-mesh labels). Off by default: the
+  // groups hold 4 bytes a cell (26 MB at 10^6 samples).
+  bool keepLinks = false;
+
+  // The link groups kept for dv; null when none are (not kept, not made
+  // yet, or made on another Delaunay). One inputs object serves one
+  // triangulation of its samples; the address and cell count tell another
+  // one apart.
+  std::shared_ptr<const ReconstructionLinks> links(const DelaunayVoronoi& dv) const;
+  void keep(const DelaunayVoronoi& dv, ReconstructionLinks links) const;
 
  private:
   mutable std::mutex linksMutex_;
   mutable const DelaunayVoronoi* linksOf_ = nullptr;
-  mutable std::unique_ptr<ReconstructionLinks> links_;
+  mutable std::shared_ptr<const ReconstructionLinks> links_;
 };
 
 // reconstructionSides (reconstruction_sides.hpp) on inputs built from the
-// same samples, with their tree and link groups; every cell
+// same samples, with their tree and the link groups they keep for dv (made
+// here, and kept when inputs.keepLinks, if they have none); every cell
 // kReconstructionSkipped when inputs.mesh is null (not closed).
 ReconstructionSides reconstructionSides(const DelaunayVoronoi& dv, const CellSideInputs& inputs,
                                         const std::vector<double>& deviation,

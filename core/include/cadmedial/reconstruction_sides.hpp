@@ -48,7 +48,7 @@ struct ReconstructionSides {
 
 // The groups of cells above, for one Delaunay and one closed
 // reconstruction. They do not depend on the deviations, so one set serves
-// every side question on that Delaunay (CellSideInputs::links: the
+// every side question on that Delaunay (CellSideInputs::keepLinks: the
 // CAD_MEDIAL cell sides and the pair-mesh labels).
 struct ReconstructionLinks {
   std::vector<Index> group;  // per cell id: its group's root cell
