@@ -37,6 +37,12 @@ bool farFromFlat(const DelaunayVoronoi& dv, Index c) {
 // inside the mesh's box, 2 outside it (so outside the mesh).
 enum : std::uint8_t { kNone = 0, kInBox = 1, kOutOfBox = 2 };
 
+// p inside `box` grown by `grow` on every side.
+bool inGrownBox(const CGAL::Bbox_3& box, const Kernel::Point_3& p, double grow) {
+  return p.x() >= box.xmin() - grow && p.x() <= box.xmax() + grow && p.y() >= box.ymin() - grow &&
+         p.y() <= box.ymax() + grow && p.z() >= box.zmin() - grow && p.z() <= box.zmax() + grow;
+}
+
 // What the near test, the links and the rays read of every cell.
 struct CellCentres {
   std::vector<std::uint8_t> where, wellShaped;
@@ -59,9 +65,7 @@ CellCentres cellCentres(const SoupTree& mesh, const DelaunayVoronoi& dv) {
       if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2])) continue;
       const Kernel::Point_3 p = mesh.permuted(x);
       out.centre[id] = p;
-      const bool inBox = p.x() >= box.xmin() && p.x() <= box.xmax() && p.y() >= box.ymin() && p.y() <= box.ymax() &&
-                         p.z() >= box.zmin() && p.z() <= box.zmax();
-      out.where[id] = inBox ? kInBox : kOutOfBox;
+      out.where[id] = inGrownBox(box, p, 0) ? kInBox : kOutOfBox;
       out.wellShaped[id] = samplesAreVertices && farFromFlat(dv, c);
     }
   });
@@ -181,10 +185,6 @@ ReconstructionSides reconstructionSides(const SoupTree& mesh, const DelaunayVoro
   const auto& wellShaped = cells.wellShaped;
   const auto& centre = cells.centre;
   std::vector<std::uint8_t> near(m, 0);
-  auto inBox = [&](const Kernel::Point_3& p, double grow) {
-    return p.x() >= box.xmin() - grow && p.x() <= box.xmax() + grow && p.y() >= box.ymin() - grow &&
-           p.y() <= box.ymax() + grow && p.z() >= box.zmin() - grow && p.z() <= box.zmax() + grow;
-  };
   std::atomic<std::size_t> nearCount{0};
   tbb::enumerable_thread_specific<std::vector<Tree::Primitive_id>> hitsPerThread;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
@@ -198,7 +198,7 @@ ReconstructionSides reconstructionSides(const SoupTree& mesh, const DelaunayVoro
       // centre's segments all touch that triangle, so it links to nothing and
       // its group's ray starts at the centre itself, the ray a near cell would
       // get from the caller. The near query is skipped: same answers.
-      if (!(maxDeviation > 0) || (wanted && !(*wanted)[id]) || !inBox(p, maxDeviation)) continue;
+      if (!(maxDeviation > 0) || (wanted && !(*wanted)[id]) || !inGrownBox(box, p, maxDeviation)) continue;
       // Every triangle t within d_t of the centre has d_t <= the largest
       // deviation of the triangles in the grid cells around it (only curved
       // faces' triangles deviate by more than their tolerance): that bounds
