@@ -1,5 +1,6 @@
 // Grows a SampleSet while keeping samples apart: every sample carries an
-// exclusion radius, and a spatial hash answers "is this spot clear?".
+// exclusion radius, and a spatial hash of small trees (clearance_tree.hpp)
+// answers "is this spot clear?".
 #pragma once
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <gp_Pnt.hxx>
 
 #include "cadmedial/sample_set.hpp"
+#include "clearance_tree.hpp"
 
 namespace cadmedial {
 
@@ -26,7 +28,7 @@ class SampleBuilder {
     set_.isNonConcaveCorner.push_back(0);
     exclusion_.push_back(exclusionRadius);
     maxExclusion_ = std::max(maxExclusion_, exclusionRadius);
-    grid_.bucket(key(cellOf(p.X()), cellOf(p.Y()), cellOf(p.Z()))).push_back({p.X(), p.Y(), p.Z(), exclusionRadius, id});
+    trees_.insert(cellTree(p.X(), p.Y(), p.Z()), {p.X(), p.Y(), p.Z(), exclusionRadius, id});
     if (set_.points.size() >= nextCellCheck_ || 2.67 * maxExclusion_ > 2 * cell_) fitCells();
     return id;
   }
@@ -37,15 +39,8 @@ class SampleBuilder {
     const double reach = honourExclusion ? std::max(radius, maxExclusion_) : radius;
     const long cx = cellOf(p.X()), cy = cellOf(p.Y()), cz = cellOf(p.Z());
     auto cellIsClear = [&](long i, long j, long k) {
-      const std::vector<Entry>* cell = grid_.find(key(i, j, k));
-      if (!cell) return true;
-      for (const Entry& q : *cell) {
-        if (q.id == ignore) continue;
-        const double dx = q.x - p.X(), dy = q.y - p.Y(), dz = q.z - p.Z();
-        const double limit = honourExclusion ? std::max(radius, q.exclusion) : radius;
-        if (dx * dx + dy * dy + dz * dz < limit * limit) return false;
-      }
-      return true;
+      const Index tree = grid_.find(key(i, j, k));
+      return tree == kNoIndex || !trees_.anyBlocks(tree, p.X(), p.Y(), p.Z(), radius, ignore, honourExclusion);
     };
     // Own cell first: most rejected darts land next to a sample there.
     if (!cellIsClear(cx, cy, cz)) return false;
@@ -68,8 +63,7 @@ class SampleBuilder {
       return;
     }
     const auto& c = set_.points[i];
-    for (Entry& q : grid_.bucket(key(cellOf(c[0]), cellOf(c[1]), cellOf(c[2]))))
-      if (q.id == i) q.exclusion = r;
+    trees_.setExclusion(cellTree(c[0], c[1], c[2]), i, c[0], c[1], c[2], r);
   }
   SampleSet& set() { return set_; }
 
@@ -95,13 +89,20 @@ class SampleBuilder {
     const double aim = 2.67 * maxExclusion_;
     if (!(aim > 0) || (cell_ <= 4 * aim && cell_ >= 0.5 * aim)) return;
     cell_ = aim;
-    CellTable grid;
+    grid_ = CellTable();
+    trees_.clear();
     // Sample ids index exclusion_ (the builder starts from an empty set).
     for (Index id = 0; id < exclusion_.size(); ++id) {
       const auto& c = set_.points[id];
-      grid.bucket(key(cellOf(c[0]), cellOf(c[1]), cellOf(c[2]))).push_back({c[0], c[1], c[2], exclusion_[id], id});
+      trees_.insert(cellTree(c[0], c[1], c[2]), {c[0], c[1], c[2], exclusion_[id], id});
     }
-    grid_ = std::move(grid);
+  }
+
+  // The tree of the cell holding (x, y, z), made on first use.
+  Index cellTree(double x, double y, double z) {
+    Index& tree = grid_.slot(key(cellOf(x), cellOf(y), cellOf(z)));
+    if (tree == kNoIndex) tree = trees_.newTree();
+    return tree;
   }
 
   SampleSet& set_;
@@ -109,39 +110,33 @@ class SampleBuilder {
   std::vector<double> exclusion_;
   double maxExclusion_ = 0;
   std::size_t nextCellCheck_ = 4096;
-  // A sample as the grid keeps it: position and exclusion next to the id, so a
-  // query reads one contiguous bucket instead of chasing ids into the
-  // SampleSet (cache misses were the cost once cells were small).
-  struct Entry {
-    double x, y, z, exclusion;
-    Index id;
-  };
-  // Cell key -> samples. Open addressing with linear probing: the dart
-  // loop does ~27 lookups per dart, and std::unordered_map's prime modulo and
-  // node chasing made those lookups most of the sampling time.
+  // Cell key -> root of the cell's tree. Open addressing with linear
+  // probing: the dart loop does ~27 lookups per dart, and std::unordered_map's
+  // prime modulo and node chasing made those lookups most of the sampling time.
   class CellTable {
    public:
-    const std::vector<Entry>* find(std::uint64_t k) const {
-      if (keys_.empty()) return nullptr;
-      for (std::size_t s = slot(k);; s = (s + 1) & mask_) {
-        if (keys_[s] == k) return &cells_[index_[s]];
-        if (keys_[s] == kEmpty) return nullptr;
+    Index find(std::uint64_t k) const {
+      if (keys_.empty()) return kNoIndex;
+      for (std::size_t s = hash(k);; s = (s + 1) & mask_) {
+        if (keys_[s] == k) return index_[s];
+        if (keys_[s] == kEmpty) return kNoIndex;
       }
     }
-    std::vector<Entry>& bucket(std::uint64_t k) {
-      if (2 * (cells_.size() + 1) > keys_.size()) grow();
-      std::size_t s = slot(k);
+    // The value slot of key k, kNoIndex when k is new.
+    Index& slot(std::uint64_t k) {
+      if (2 * (used_ + 1) > keys_.size()) grow();
+      std::size_t s = hash(k);
       for (; keys_[s] != kEmpty; s = (s + 1) & mask_)
-        if (keys_[s] == k) return cells_[index_[s]];
+        if (keys_[s] == k) return index_[s];
       keys_[s] = k;
-      index_[s] = static_cast<Index>(cells_.size());
-      cells_.emplace_back();
-      return cells_.back();
+      index_[s] = kNoIndex;
+      ++used_;
+      return index_[s];
     }
 
    private:
     static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};  // keys use 63 bits
-    std::size_t slot(std::uint64_t k) const { return static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> shift_); }
+    std::size_t hash(std::uint64_t k) const { return static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> shift_); }
     void grow() {
       const std::size_t size = keys_.empty() ? 1024 : 2 * keys_.size();
       int bits = 0;
@@ -154,7 +149,7 @@ class SampleBuilder {
       oldIndex.swap(index_);
       for (std::size_t i = 0; i < oldKeys.size(); ++i) {
         if (oldKeys[i] == kEmpty) continue;
-        std::size_t s = slot(oldKeys[i]);
+        std::size_t s = hash(oldKeys[i]);
         while (keys_[s] != kEmpty) s = (s + 1) & mask_;
         keys_[s] = oldKeys[i];
         index_[s] = oldIndex[i];
@@ -162,11 +157,12 @@ class SampleBuilder {
     }
     std::vector<std::uint64_t> keys_;
     std::vector<Index> index_;
-    std::vector<std::vector<Entry>> cells_;
+    std::size_t used_ = 0;
     std::size_t mask_ = 0;
     int shift_ = 64;
   };
   CellTable grid_;
+  ClearanceTrees trees_;
 };
 
 }  // namespace cadmedial
