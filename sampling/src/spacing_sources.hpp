@@ -4,7 +4,7 @@
 // A face's spacing field holds that on a 17 × 17 node grid, which on a big
 // face is too coarse to see a small hole's rim (cells 31 mm wide on a 500 mm
 // plate, where the rim needs ~1 mm within a few mm of it); this answers it at
-// any point, with a k-d tree and the sources visited nearest first.
+// any point, with a k-d tree whose nodes know their finest source.
 #pragma once
 
 #include <memory>

@@ -296,9 +296,10 @@ TEST(FaceSpacing, EdgeIsGradedAlongItsLengthFromAFineCorner) {
   EXPECT_LT(xs.size(), 40u);
 }
 
-// The k-d tree search with its early stop against the plain minimum over
+// The k-d tree search with its pruning against the plain minimum over
 // every source, on random sources of mixed spacings (clustered, as points
-// along edges are) and random queries with and without slack.
+// along edges are) and random queries with and without slack; then sources
+// on one spot, and a tree of a single source.
 TEST(SpacingSources, NearestFirstSearchMatchesTheMinimumOverAllSources) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> coordinate(-50, 50), spacing(0.2, 3), slack(0, 10), cap(1, 20);
@@ -319,11 +320,16 @@ TEST(SpacingSources, NearestFirstSearchMatchesTheMinimumOverAllSources) {
     double expected = upTo;
     for (const auto& source : sources)
       expected = std::min(expected, source.spacing + grading * std::max(0.0, p.Distance(source.point) - within));
-    EXPECT_NEAR(tree.allowedNear(p, within, upTo), expected, 1e-12) << "query " << q;
+    // The same arithmetic on every source: the tree's pruning must not change a bit.
+    EXPECT_EQ(tree.allowedNear(p, within, upTo), expected) << "query " << q;
     lowered += expected < upTo;
   }
   EXPECT_GT(lowered, 200);  // the queries do reach the sources
   EXPECT_EQ(SpacingSources({}, grading).allowedNear(gp_Pnt(0, 0, 0), 0, 4.0), 4.0);
+  std::vector<SpacingSources::Source> onOneSpot(100, {gp_Pnt(1, 2, 3), 0.5});
+  onOneSpot[37].spacing = 0.25;
+  EXPECT_EQ(SpacingSources(onOneSpot, grading).allowedNear(gp_Pnt(1, 2, 7), 0, 9.0), 0.25 + grading * 4);
+  EXPECT_EQ(SpacingSources({{gp_Pnt(0, 0, 0), 1.0}}, grading).allowedNear(gp_Pnt(3, 0, 0), 1, 9.0), 1.0 + grading * 2);
 }
 
 // A pair-mesh that is not valid is sampled again, the second time with
