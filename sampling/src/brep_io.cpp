@@ -12,6 +12,7 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
+#include <BRepLib.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <Bnd_Box.hxx>
 #include <Precision.hxx>
@@ -246,6 +247,25 @@ bool reachesInfinity(const TopoDS_Shape& shape) {
   return false;
 }
 
+// STEP files often give a plane face's edges no curve in the plane's (u, v):
+// OCCT then projects the 3D curve again on every BRep_Tool::CurveOnSurface
+// call (BRep_Tool::CurveOnPlane), and the sampling asks thousands of times
+// (vertex classification, spacings, triplets, face reconstruction: a tenth of
+// the lever's sampling time). BRepLib stores that same projection once. The
+// solids are the caller's own (read from a file or BREP text), and this runs
+// after the validity check, which therefore sees the input as it was.
+void storePlanePcurves(const TopoDS_Solid& solid) {
+  try {
+    for (TopExp_Explorer f(solid, TopAbs_FACE); f.More(); f.Next()) {
+      const TopoDS_Face& face = TopoDS::Face(f.Current());
+      for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next())
+        BRepLib::BuildPCurveForEdgeOnPlane(TopoDS::Edge(e.Current()), face);
+    }
+  } catch (const Standard_Failure&) {
+    // an edge OCCT cannot project keeps being projected on demand, as before
+  }
+}
+
 }  // namespace
 
 std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<std::string>* warnings,
@@ -260,6 +280,7 @@ std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<
                             " skipped: it reaches coordinates beyond 2e100 (what OCCT treats as infinite)");
     } else if (hasOnlyClosedShells(solid)) {
       result.push_back(repairedIfInvalid(solid, index, warnings));
+      storePlanePcurves(result.back());
     } else if (warnings) {
       warnings->push_back("solid " + std::to_string(index) + " skipped: its shell is not closed");
     }
@@ -279,7 +300,10 @@ std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<
   if (!sewn.empty() && warnings)
     warnings->push_back("no closed solid in the input; its faces were " + describeSewing(outcome) + ", made into " +
                         std::to_string(sewn.size()) + " solid(s)");
-  for (std::size_t k = 0; k < sewn.size(); ++k) result.push_back(repairedIfInvalid(sewn[k], static_cast<int>(k), warnings));
+  for (std::size_t k = 0; k < sewn.size(); ++k) {
+    result.push_back(repairedIfInvalid(sewn[k], static_cast<int>(k), warnings));
+    storePlanePcurves(result.back());
+  }
   return result;
 }
 
