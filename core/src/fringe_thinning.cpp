@@ -196,7 +196,7 @@ std::size_t thinFringe(MedialComplex& mc, const SampleSet& samples, const Fringe
       if (!asked[v] || !(mc.radius[v] > 0)) continue;
       const double limit = (params.slack - mc.radius[v]) / params.cosBeta;
       dominated[v] = dominatedByNeighbour(static_cast<Index>(v), limit) ||
-                     tree.minGap(mc.vertices[v], limit, params.minReach) <= limit;
+                     tree.hasGapAtMost(mc.vertices[v], limit, params.minReach);
     }
   });
   auto isDominated = [&](Index v) { return dominated[v] == 1; };

@@ -183,7 +183,7 @@ std::size_t dropNestedIslands(MedialComplex& mc, double cosBeta, double slack, s
     const Index root = comps.root[v];
     if (!drop[root]) continue;
     const double limit = (slack - mc.radius[v]) / cosBeta;
-    if (!(mainAxis.minGap(mc.vertices[v], limit) <= limit)) drop[root] = 0;
+    if (!mainAxis.hasGapAtMost(mc.vertices[v], limit)) drop[root] = 0;
   }
   return removeComponents(mc, comps, drop, polygonsRemoved);
 }

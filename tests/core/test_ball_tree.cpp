@@ -1,4 +1,4 @@
-// BallTree::minGap against a scan of every ball, on trees large enough to be
+// BallTree::minGap and hasGapAtMost against a scan of every ball, on trees large enough to be
 // built in parallel (the build splits ranges of 4096 balls and more across
 // threads into one pre-ordered node array; a misplaced subtree would lose or
 // repeat balls and change answers).
@@ -50,6 +50,15 @@ TEST(BallTree, MinGapEqualsAScanOfEveryBall) {
       // With a stop value the answer is only known to be at most it.
       const double exact = scanMinGap(balls, p, 0.5), stopAt = exact + (q % 2 ? 0.25 : -0.25);
       EXPECT_EQ(tree.minGap(p, stopAt, 0.5) <= stopAt, exact <= stopAt) << n << " balls, query " << q;
+      // The yes/no search prunes by the limit itself: same answers, at the
+      // limit exactly too (a gap equal to it counts).
+      // (A finite limit: with every ball skipped, minGap's +inf is "at most" an
+      // infinite one, while no ball has a gap.)
+      for (const double limit : {stopAt, exact, std::nextafter(exact, -1e300)}) {
+        if (!std::isfinite(limit)) continue;
+        EXPECT_EQ(tree.hasGapAtMost(p, limit, 0.5), exact <= limit) << n << " balls, query " << q;
+        EXPECT_EQ(tree.hasGapAtMost(p, limit), scanMinGap(balls, p, -1) <= limit) << n << " balls, query " << q;
+      }
     }
   }
 }
@@ -57,6 +66,7 @@ TEST(BallTree, MinGapEqualsAScanOfEveryBall) {
 TEST(BallTree, EmptyTreeHasNoGap) {
   const BallTree tree({});
   EXPECT_EQ(tree.minGap({0, 0, 0}, 0), std::numeric_limits<double>::infinity());
+  EXPECT_FALSE(tree.hasGapAtMost({0, 0, 0}, 1e300));
 }
 
 }  // namespace

@@ -78,6 +78,40 @@ class BallTree {
     return best;
   }
 
+  // Whether some ball (centre not nearer p than skipWithin) has a gap
+  // |p - c| - r <= limit: the same answer as minGap(p, limit, skipWithin) <=
+  // limit, with the same gaps, but a node is skipped as soon as its bound is
+  // over `limit`, not only over the best gap found so far. For a point with
+  // no such ball (the usual case in fringe thinning) minGap had to narrow
+  // the best gap down to the true minimum first: most of the thinning's
+  // time on a torus.
+  bool hasGapAtMost(const Vec3& p, double limit, double skipWithin = -1) const {
+    if (nodes_.empty()) return false;
+    std::uint32_t stack[kMaxDepth + 2];
+    std::size_t size = 0;
+    if (bound(nodes_[0], p) <= limit) stack[size++] = 0;
+    while (size > 0) {
+      const Node& node = nodes_[stack[--size]];
+      if (node.left < 0) {
+        for (std::uint32_t k = node.begin; k < node.end; ++k) {
+          const double d = distance(p, balls_[k].centre);
+          if (d < skipWithin) continue;
+          if (d - balls_[k].radius <= limit) return true;
+        }
+        continue;
+      }
+      const double l = bound(nodes_[node.left], p), r = bound(nodes_[node.right], p);
+      // The farther child first, so the nearer one is searched first.
+      const bool leftNearer = l < r;
+      const double farBound = leftNearer ? r : l, nearBound = leftNearer ? l : r;
+      const auto far = static_cast<std::uint32_t>(leftNearer ? node.right : node.left);
+      const auto near = static_cast<std::uint32_t>(leftNearer ? node.left : node.right);
+      if (farBound <= limit) stack[size++] = far;
+      if (nearBound <= limit) stack[size++] = near;
+    }
+    return false;
+  }
+
  private:
   // Levels: halving from 2^32 balls to leaves of <= 8 takes 30.
   static constexpr std::size_t kMaxDepth = 32;
