@@ -113,32 +113,38 @@ void addFaceRays(const TopoDS_Vertex& vertex, const TopoDS_Face& face, const Fac
 }
 
 // max over unit n of min_i rays[i]·n, by enumerating the candidates where the
-// optimum of this small LP can sit (one, two or three active rays).
-std::vector<std::pair<double, gp_Vec>> bestHalfSpaceNormals(const std::vector<gp_Vec>& rays) {
-  std::vector<gp_Vec> candidates;
+// optimum of this small LP can sit (one, two or three active rays): the
+// candidates whose margin is at least -tolerance, best first (ties in the
+// order they were made). Scoring a candidate stops at the first ray below
+// -tolerance: a corner with 80 rays has ~170 k candidates, most of them far
+// below, and scoring and sorting them all was a third of the lever's vertex
+// classification.
+std::vector<std::pair<double, gp_Vec>> bestHalfSpaceNormals(const std::vector<gp_Vec>& rays, double tolerance) {
+  std::vector<std::pair<double, gp_Vec>> scored;
+  auto score = [&](const gp_Vec& n) {
+    double worst = 1;
+    for (const gp_Vec& r : rays) {
+      worst = std::min(worst, r.Dot(n));
+      if (worst < -tolerance) return;
+    }
+    scored.emplace_back(worst, n);
+  };
   const std::size_t m = rays.size();
   for (std::size_t i = 0; i < m; ++i) {
-    candidates.push_back(rays[i]);
+    score(rays[i]);
     for (std::size_t j = i + 1; j < m; ++j) {
       gp_Vec s = rays[i] + rays[j];
-      if (s.Magnitude() > 1e-9) candidates.push_back(s.Normalized());
+      if (s.Magnitude() > 1e-9) score(s.Normalized());
       for (std::size_t k = j + 1; k < m; ++k) {
         gp_Vec c = (rays[i] - rays[j]).Crossed(rays[i] - rays[k]);
         if (c.Magnitude() < 1e-12) continue;
         c.Normalize();
-        candidates.push_back(c);
-        candidates.push_back(-c);
+        score(c);
+        score(-c);
       }
     }
   }
-  std::vector<std::pair<double, gp_Vec>> scored;
-  scored.reserve(candidates.size());
-  for (const gp_Vec& n : candidates) {
-    double worst = 1;
-    for (const gp_Vec& r : rays) worst = std::min(worst, r.Dot(n));
-    scored.emplace_back(worst, n);
-  }
-  std::sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::stable_sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
   return scored;
 }
 
@@ -204,7 +210,7 @@ std::vector<VertexFeature> classifyVertices(const SolidTopology& topo, const std
     rays.erase(std::remove_if(rays.begin(), rays.end(), [](const gp_Vec& r) { return r.Magnitude() < 0.5; }),
                rays.end());
     feat.nonConcave = true;
-    const auto scored = bestHalfSpaceNormals(rays);
+    const auto scored = bestHalfSpaceNormals(rays, kHalfSpaceTolerance);
     if (!mine.solid) mine.solid = std::make_unique<SolidPointClassifier>(topo.solid);
     const gp_Pnt origin = BRep_Tool::Pnt(vertex);
     std::vector<gp_Vec> tried;
