@@ -247,22 +247,25 @@ bool reachesInfinity(const TopoDS_Shape& shape) {
   return false;
 }
 
-// STEP files often give a plane face's edges no curve in the plane's (u, v):
-// OCCT then projects the 3D curve again on every BRep_Tool::CurveOnSurface
-// call (BRep_Tool::CurveOnPlane), and the sampling asks thousands of times
-// (vertex classification, spacings, triplets, face reconstruction: a tenth of
-// the lever's sampling time). BRepLib stores that same projection once. The
-// solids are the caller's own (read from a file or BREP text), and this runs
-// after the validity check, which therefore sees the input as it was.
+// STEP files often give a plane face's edges no curve in the plane's (u, v)
+// (OCCT's reader drops them), and OCCT then projects the 3D curve again on
+// every BRep_Tool::CurveOnSurface call (BRep_Tool::CurveOnPlane); the
+// sampling asks thousands of times (vertex classification, spacings,
+// triplets, face reconstruction: a tenth of the lever's sampling time).
+// BRepLib stores that same projection once. The solids are the caller's own
+// (read from a file or BREP text; brep_io.hpp says so). Run after a solid's
+// validity check, which so sees it as read (unless an earlier solid shares
+// its edges).
 void storePlanePcurves(const TopoDS_Solid& solid) {
-  try {
-    for (TopExp_Explorer f(solid, TopAbs_FACE); f.More(); f.Next()) {
-      const TopoDS_Face& face = TopoDS::Face(f.Current());
-      for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next())
+  for (TopExp_Explorer f(solid, TopAbs_FACE); f.More(); f.Next()) {
+    const TopoDS_Face& face = TopoDS::Face(f.Current());
+    for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+      try {
         BRepLib::BuildPCurveForEdgeOnPlane(TopoDS::Edge(e.Current()), face);
+      } catch (const Standard_Failure&) {
+        // an edge OCCT cannot project keeps being projected on demand, as before
+      }
     }
-  } catch (const Standard_Failure&) {
-    // an edge OCCT cannot project keeps being projected on demand, as before
   }
 }
 

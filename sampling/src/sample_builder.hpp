@@ -59,7 +59,7 @@ class SampleBuilder {
     exclusion_[i] = r;
     maxExclusion_ = std::max(maxExclusion_, r);
     if (2.67 * maxExclusion_ > 2 * cell_) {
-      fitCells();  // the entry's bucket is rebuilt with its new radius
+      fitCells();  // the cell trees are rebuilt, with the entry's new radius
       return;
     }
     const auto& c = set_.points[i];

@@ -75,7 +75,8 @@ SpacingSources::SpacingSources(std::vector<Source> sources, double grading)
     finest_ = std::min(finest_, s.spacing);
   }
   if (!tree_->points.empty()) {
-    tree_->nodes.reserve(2 * (tree_->points.size() / Tree::kLeafSize + 1));
+    // Leaves hold 4-8 points (halving ranges over 8), so up to 2n/4 nodes.
+    tree_->nodes.reserve(tree_->points.size() / 2 + 1);
     tree_->build(0, static_cast<std::uint32_t>(tree_->points.size()));
   }
 }
@@ -99,7 +100,9 @@ double SpacingSources::allowedNear(const gp_Pnt& p, double slack, double upTo) c
     std::uint32_t node;
     double bound;
   };
-  std::array<Pending, 64> stack;  // depth <= log2(n / leaf) + 1 < 33, one entry pushed per level
+  // Each pop pushes at most two children: at most one entry per level
+  // waits, plus the one popped next; depth <= log2(n / 4) < 31.
+  std::array<Pending, 64> stack;
   std::size_t top = 0;
   stack[top++] = {0, graded(t.nodes[0].finest, Tree::squaredDistance(t.nodes[0], q))};
   while (top > 0) {

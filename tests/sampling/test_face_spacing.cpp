@@ -300,7 +300,7 @@ TEST(FaceSpacing, EdgeIsGradedAlongItsLengthFromAFineCorner) {
 // every source, on random sources of mixed spacings (clustered, as points
 // along edges are) and random queries with and without slack; then sources
 // on one spot, and a tree of a single source.
-TEST(SpacingSources, NearestFirstSearchMatchesTheMinimumOverAllSources) {
+TEST(SpacingSources, PrunedSearchMatchesTheMinimumOverAllSources) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> coordinate(-50, 50), spacing(0.2, 3), slack(0, 10), cap(1, 20);
   std::vector<SpacingSources::Source> sources;

@@ -3,6 +3,8 @@
 // distance to its centres' box minus its largest radius. Coverage of a
 // boundary by medial balls (DESIGN.md §6) asks exactly this per boundary
 // point; used by sampling/'s evaluation and by the analytic MEDIAL tests.
+// Fringe thinning and the small-island test ask the yes/no form
+// (hasGapAtMost): is some ball within a given gap of a point?
 #pragma once
 
 #include <algorithm>

@@ -49,7 +49,11 @@ ShapeCensus takeCensus(const TopoDS_Shape& shape);
 // closed, for the caller's error message). A solid reaching coordinates
 // beyond 2e100 (Precision::Infinite; a malformed file) is skipped with a
 // warning; when that leaves none, the faces are not sewn but refused:
-// InputError (kExitUnreadableInput).
+// InputError (kExitUnreadableInput). The solids' plane faces get their
+// edges' (u, v) curves stored (the projection OCCT would otherwise make on
+// every call): this edits the shape's edges, so pass a shape this call may
+// change (one read from a file or BREP text), and not one another thread is
+// reading; written out with BRepTools it then holds those curves too.
 std::vector<TopoDS_Solid> closedSolidsOf(const TopoDS_Shape& shape, std::vector<std::string>* warnings = nullptr,
                                          std::string* sewing = nullptr);
 
