@@ -1,5 +1,6 @@
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "cadmedial/medial.hpp"
@@ -105,16 +106,20 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
     fringe.slack = params.fringeSlackFraction * spacing;
     r.counts.fringePolygonsThinned = thinFringe(r, samples, fringe);
   }
+  // The island rules share the complex's components while none removes anything.
+  std::optional<VertexComponents> components;
   if (params.dropPointIslands)
-    r.counts.pointIslands = dropPointIslands(r, 1e-9 * samples.bboxDiagonal(), nullptr);
-  if (params.dropForcedOnlyIslands) r.counts.forcedOnlyIslands = dropForcedOnlyIslands(r, nullptr);
+    r.counts.pointIslands = dropPointIslands(r, 1e-9 * samples.bboxDiagonal(), nullptr, &components);
+  if (params.dropForcedOnlyIslands) r.counts.forcedOnlyIslands = dropForcedOnlyIslands(r, nullptr, &components);
   if (params.islandRadiusFraction > 0) {
-    r.counts.subResolutionIslands =
-        dropSubResolutionIslands(r, params.islandRadiusFraction * spacing, &r.counts.subResolutionIslandPolygons);
+    r.counts.subResolutionIslands = dropSubResolutionIslands(r, params.islandRadiusFraction * spacing,
+                                                             &r.counts.subResolutionIslandPolygons, &components);
   }
   if (params.dropNestedIslands && spacing > 0) {
-    r.counts.nestedIslands = dropNestedIslands(r, fringeCosBeta, params.fringeSlackFraction * spacing, nullptr);
+    r.counts.nestedIslands =
+        dropNestedIslands(r, fringeCosBeta, params.fringeSlackFraction * spacing, nullptr, &components);
   }
+  components.reset();
   // After the rules above, which read one vertex per cell. Voronoi vertices
   // this close are one (cospherical samples).
   r.counts.coincidentVerticesWelded =

@@ -11,6 +11,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 namespace cadmedial {
 
@@ -371,19 +372,22 @@ void PairMeshBuilder::elements() {
   m.boundarySimplex.reserve(room);
   m.onSheets.reserve(room);
   m.boundaryTriangles.reserve(triangles);
-  auto append = [&m](const PairMesh& part) {
-    m.tets.insert(m.tets.end(), part.tets.begin(), part.tets.end());
-    m.type.insert(m.type.end(), part.type.begin(), part.type.end());
-    m.medialSimplex.insert(m.medialSimplex.end(), part.medialSimplex.begin(), part.medialSimplex.end());
-    m.boundarySimplex.insert(m.boundarySimplex.end(), part.boundarySimplex.begin(), part.boundarySimplex.end());
-    m.onSheets.insert(m.onSheets.end(), part.onSheets.begin(), part.onSheets.end());
-    m.boundaryTriangles.insert(m.boundaryTriangles.end(), part.boundaryTriangles.begin(), part.boundaryTriangles.end());
-    m.counts.faceVertex += part.counts.faceVertex;
-    m.counts.edgeEdge += part.counts.edgeEdge;
-    m.counts.vertexFace += part.counts.vertexFace;
+  // Each array is appended in a task of its own: the copies and the page
+  // faults of fresh memory were a third of the box's build on one core.
+  auto appendAll = [&](auto member) {
+    auto& to = m.*member;
+    for (const auto* parts : {&edgeParts, &faceParts})
+      for (const PairMesh& part : *parts) to.insert(to.end(), (part.*member).begin(), (part.*member).end());
   };
-  for (const PairMesh& part : edgeParts) append(part);
-  for (const PairMesh& part : faceParts) append(part);
+  tbb::parallel_invoke([&] { appendAll(&PairMesh::tets); }, [&] { appendAll(&PairMesh::type); },
+                       [&] { appendAll(&PairMesh::medialSimplex); }, [&] { appendAll(&PairMesh::boundarySimplex); },
+                       [&] { appendAll(&PairMesh::onSheets); }, [&] { appendAll(&PairMesh::boundaryTriangles); });
+  for (const auto* parts : {&edgeParts, &faceParts})
+    for (const PairMesh& part : *parts) {
+      m.counts.faceVertex += part.counts.faceVertex;
+      m.counts.edgeEdge += part.counts.edgeEdge;
+      m.counts.vertexFace += part.counts.vertexFace;
+    }
   m.counts.boundaryTriangles = m.boundaryTriangles.size();
 }
 

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <array>
+#include <optional>
 
 #include "cadmedial/ball_tree.hpp"
 #include "cadmedial/polygon_complex.hpp"
@@ -7,58 +8,66 @@
 
 namespace cadmedial {
 
+VertexComponents vertexComponents(const MedialComplex& mc) {
+  const std::size_t nv = mc.vertices.size(), nf = mc.polygonCount();
+  UnionFind uf(nv);
+  for (std::size_t p = 0; p < nf; ++p)
+    for (Index k = mc.polygonOffsets[p] + 1; k < mc.polygonOffsets[p + 1]; ++k)
+      uf.unite(mc.polygonVertices[mc.polygonOffsets[p]], mc.polygonVertices[k]);
+  // Components are numbered in the order of their roots' vertex ids (a root
+  // is its own root), so that "the first component with the most polygons"
+  // is the one it was when the rules kept per-vertex arrays indexed by root.
+  VertexComponents comps;
+  comps.ofVertex.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v)
+    if (uf.find(static_cast<Index>(v)) == v) comps.ofVertex[v] = comps.count++;
+  for (std::size_t v = 0; v < nv; ++v) comps.ofVertex[v] = comps.ofVertex[uf.find(static_cast<Index>(v))];
+  // The component with the most polygons is never dropped (not the one with
+  // the largest ball: the bottle's whole wall axis has r <= 0.38 < 0.25 h,
+  // and its largest ball sat on a 4-polygon island).
+  std::vector<Index> polygonsOf(comps.count, 0);
+  for (std::size_t p = 0; p < nf; ++p) ++polygonsOf[comps.ofPolygon(mc, p)];
+  comps.largest = static_cast<Index>(std::max_element(polygonsOf.begin(), polygonsOf.end()) - polygonsOf.begin());
+  return comps;
+}
+
 namespace {
 
-// Connected components of a complex's vertices (joined through polygons)
-// and what the island rules ask about each: indexed by the root vertex.
-struct Components {
-  explicit Components(const MedialComplex& mc) : uf(mc.vertices.size()) {
-    const std::size_t nv = mc.vertices.size(), nf = mc.polygonCount();
-    for (std::size_t p = 0; p < nf; ++p)
-      for (Index k = mc.polygonOffsets[p] + 1; k < mc.polygonOffsets[p + 1]; ++k)
-        uf.unite(mc.polygonVertices[mc.polygonOffsets[p]], mc.polygonVertices[k]);
-    root.resize(nv);
-    for (std::size_t v = 0; v < nv; ++v) root[v] = uf.find(static_cast<Index>(v));
-    // The component with the most polygons is never dropped (not the one with
-    // the largest ball: the bottle's whole wall axis has r <= 0.38 < 0.25 h,
-    // and its largest ball sat on a 4-polygon island).
-    std::vector<Index> polygonsOf(nv, 0);
-    for (std::size_t p = 0; p < nf; ++p) ++polygonsOf[root[mc.polygonVertices[mc.polygonOffsets[p]]]];
-    keepRoot = static_cast<Index>(std::max_element(polygonsOf.begin(), polygonsOf.end()) - polygonsOf.begin());
-  }
-  UnionFind uf;
-  std::vector<Index> root;  // per vertex
-  Index keepRoot = 0;
-};
+// The components of `mc`: those in *shared if it holds them, else computed
+// (and kept there for the next rule).
+const VertexComponents& componentsOf(const MedialComplex& mc, std::optional<VertexComponents>* shared,
+                                     std::optional<VertexComponents>& local) {
+  std::optional<VertexComponents>& slot = shared ? *shared : local;
+  if (!slot) slot.emplace(vertexComponents(mc));
+  return *slot;
+}
 
-// Per vertex: 1 at the root of each component that has a polygon whose
-// provenance satisfies `wanted`.
+// Per component: 1 if it has a polygon whose provenance satisfies `wanted`.
 template <typename Wanted>
-std::vector<std::uint8_t> rootsWithPolygon(const MedialComplex& mc, const Components& comps, Wanted wanted) {
-  std::vector<std::uint8_t> flag(mc.vertices.size(), 0);
+std::vector<std::uint8_t> componentsWithPolygon(const MedialComplex& mc, const VertexComponents& comps, Wanted wanted) {
+  std::vector<std::uint8_t> flag(comps.count, 0);
   for (std::size_t p = 0; p < mc.polygonCount(); ++p)
-    if (wanted(mc.provenance[p])) flag[comps.root[mc.polygonVertices[mc.polygonOffsets[p]]]] = 1;
+    if (wanted(mc.provenance[p])) flag[comps.ofPolygon(mc, p)] = 1;
   return flag;
 }
 
-// Removes the polygons of the components whose root has drop[root] != 0 and
-// the vertices no polygon uses any more; returns how many components.
-std::size_t removeComponents(MedialComplex& mc, const Components& comps, const std::vector<std::uint8_t>& dropRoot,
-                             std::size_t* polygonsRemoved) {
+// Removes the polygons of the components with drop[c] != 0 and the vertices
+// no polygon uses any more; returns how many components. The components
+// change with the complex, so *shared is emptied when something goes.
+std::size_t removeComponents(MedialComplex& mc, const VertexComponents& comps, const std::vector<std::uint8_t>& drop,
+                             std::size_t* polygonsRemoved, std::optional<VertexComponents>* shared) {
   if (polygonsRemoved) *polygonsRemoved = 0;
-  const std::size_t nv = mc.vertices.size(), nf = mc.polygonCount();
-  std::size_t islands = 0;
-  for (std::size_t v = 0; v < nv; ++v)
-    if (comps.root[v] == static_cast<Index>(v) && dropRoot[v]) ++islands;
+  const std::size_t islands = static_cast<std::size_t>(std::count(drop.begin(), drop.end(), 1));
   if (islands == 0) return 0;
-
+  const std::size_t nf = mc.polygonCount();
   std::vector<std::uint8_t> keep(nf, 1);
   for (std::size_t p = 0; p < nf; ++p)
-    if (dropRoot[comps.root[mc.polygonVertices[mc.polygonOffsets[p]]]]) {
+    if (drop[comps.ofPolygon(mc, p)]) {
       keep[p] = 0;
       if (polygonsRemoved) ++*polygonsRemoved;
     }
-  keepPolygons(mc, keep);
+  keepPolygons(mc, keep);  // invalidates comps if it is *shared's
+  if (shared) shared->reset();
   return islands;
 }
 
@@ -79,19 +88,23 @@ std::size_t removeComponents(MedialComplex& mc, const Components& comps, const s
 // kept too: it is the only attachment of its edge or corner, and dropping
 // those cost the lever 0.8 % of convex-edge length, 2 of 54 corners and
 // 0.05 % coverage (measured with scripts/eval_table.py --public).
-std::size_t dropSubResolutionIslands(MedialComplex& mc, double minRadius, std::size_t* polygonsRemoved) {
+std::size_t dropSubResolutionIslands(MedialComplex& mc, double minRadius, std::size_t* polygonsRemoved,
+                                     std::optional<VertexComponents>* shared) {
   if (polygonsRemoved) *polygonsRemoved = 0;
   const std::size_t nv = mc.vertices.size();
   if (nv == 0 || mc.polygonCount() == 0) return 0;
-  const Components comps(mc);
-  std::vector<double> maxRadius(nv, -1.0);
-  for (std::size_t v = 0; v < nv; ++v) maxRadius[comps.root[v]] = std::max(maxRadius[comps.root[v]], mc.radius[v]);
+  std::optional<VertexComponents> local;
+  const VertexComponents& comps = componentsOf(mc, shared, local);
+  std::vector<double> maxRadius(comps.count, -1.0);
+  for (std::size_t v = 0; v < nv; ++v) {
+    double& m = maxRadius[comps.ofVertex[v]];
+    m = std::max(m, mc.radius[v]);
+  }
   const std::vector<std::uint8_t> attached =
-      rootsWithPolygon(mc, comps, [](PolygonProvenance p) { return p != PolygonProvenance::DelaunayEdgeFacet; });
-  std::vector<std::uint8_t> drop(nv, 0);
-  for (std::size_t v = 0; v < nv; ++v)
-    drop[v] = comps.root[v] == static_cast<Index>(v) && v != comps.keepRoot && !attached[v] && maxRadius[v] < minRadius;
-  return removeComponents(mc, comps, drop, polygonsRemoved);
+      componentsWithPolygon(mc, comps, [](PolygonProvenance p) { return p != PolygonProvenance::DelaunayEdgeFacet; });
+  std::vector<std::uint8_t> drop(comps.count, 0);
+  for (Index c = 0; c < comps.count; ++c) drop[c] = c != comps.largest && !attached[c] && maxRadius[c] < minRadius;
+  return removeComponents(mc, comps, drop, polygonsRemoved, shared);
 }
 
 // Why: samples on a sphere are cospherical, so every Delaunay cell of four of
@@ -100,26 +113,27 @@ std::size_t dropSubResolutionIslands(MedialComplex& mc, double minRadius, std::s
 // no other inner polygon uses those cells, it is a component of its own
 // (a box with all edges filleted: its corner spheres gave β0 = 2). Such a
 // component is one point, so it adds nothing to the axis but a wrong β0.
-std::size_t dropPointIslands(MedialComplex& mc, double tolerance, std::size_t* polygonsRemoved) {
+std::size_t dropPointIslands(MedialComplex& mc, double tolerance, std::size_t* polygonsRemoved,
+                             std::optional<VertexComponents>* shared) {
   if (polygonsRemoved) *polygonsRemoved = 0;
   const std::size_t nv = mc.vertices.size();
   if (nv == 0 || mc.polygonCount() == 0) return 0;
-  const Components comps(mc);
-  std::vector<std::array<double, 6>> box(nv, {1e300, 1e300, 1e300, -1e300, -1e300, -1e300});
+  std::optional<VertexComponents> local;
+  const VertexComponents& comps = componentsOf(mc, shared, local);
+  std::vector<std::array<double, 6>> box(comps.count, {1e300, 1e300, 1e300, -1e300, -1e300, -1e300});
   for (std::size_t v = 0; v < nv; ++v) {
-    auto& b = box[comps.root[v]];
+    auto& b = box[comps.ofVertex[v]];
     for (int k = 0; k < 3; ++k) {
       b[k] = std::min(b[k], mc.vertices[v][k]);
       b[k + 3] = std::max(b[k + 3], mc.vertices[v][k]);
     }
   }
-  std::vector<std::uint8_t> drop(nv, 0);
-  for (std::size_t v = 0; v < nv; ++v) {
-    if (comps.root[v] != static_cast<Index>(v) || v == comps.keepRoot) continue;
-    const auto& b = box[v];
-    drop[v] = std::max({b[3] - b[0], b[4] - b[1], b[5] - b[2]}) <= tolerance;
+  std::vector<std::uint8_t> drop(comps.count, 0);
+  for (Index c = 0; c < comps.count; ++c) {
+    const auto& b = box[c];
+    drop[c] = c != comps.largest && std::max({b[3] - b[0], b[4] - b[1], b[5] - b[2]}) <= tolerance;
   }
-  return removeComponents(mc, comps, drop, polygonsRemoved);
+  return removeComponents(mc, comps, drop, polygonsRemoved, shared);
 }
 
 // Why: a convex-edge or corner triangle completes the axis from a feature to
@@ -131,17 +145,18 @@ std::size_t dropPointIslands(MedialComplex& mc, double tolerance, std::size_t* p
 // off the rest of the axis (CTC-01: 15 of its 18 extra components). Such a
 // component is dropped, never the largest one; the feature points it held
 // are the pruned sheet's, which the filter dropped on purpose.
-std::size_t dropForcedOnlyIslands(MedialComplex& mc, std::size_t* polygonsRemoved) {
+std::size_t dropForcedOnlyIslands(MedialComplex& mc, std::size_t* polygonsRemoved,
+                                  std::optional<VertexComponents>* shared) {
   if (polygonsRemoved) *polygonsRemoved = 0;
   const std::size_t nv = mc.vertices.size();
   if (nv == 0 || mc.polygonCount() == 0) return 0;
-  const Components comps(mc);
+  std::optional<VertexComponents> local;
+  const VertexComponents& comps = componentsOf(mc, shared, local);
   const std::vector<std::uint8_t> hasFacet =
-      rootsWithPolygon(mc, comps, [](PolygonProvenance p) { return p == PolygonProvenance::DelaunayEdgeFacet; });
-  std::vector<std::uint8_t> drop(nv, 0);
-  for (std::size_t v = 0; v < nv; ++v)
-    drop[v] = comps.root[v] == static_cast<Index>(v) && v != comps.keepRoot && !hasFacet[v];
-  return removeComponents(mc, comps, drop, polygonsRemoved);
+      componentsWithPolygon(mc, comps, [](PolygonProvenance p) { return p == PolygonProvenance::DelaunayEdgeFacet; });
+  std::vector<std::uint8_t> drop(comps.count, 0);
+  for (Index c = 0; c < comps.count; ++c) drop[c] = c != comps.largest && !hasFacet[c];
+  return removeComponents(mc, comps, drop, polygonsRemoved, shared);
 }
 
 // Why: an island whose every ball (nearly) nests in a ball of the main axis
@@ -157,35 +172,34 @@ std::size_t dropForcedOnlyIslands(MedialComplex& mc, std::size_t* polygonsRemove
 // with the most polygons, which lets v's ball reach out of u's by up to
 // (1 - cosBeta) |u - v| + slack. Islands with a forced triangle stay (they
 // hold a convex edge's or corner's attachment).
-std::size_t dropNestedIslands(MedialComplex& mc, double cosBeta, double slack, std::size_t* polygonsRemoved) {
+std::size_t dropNestedIslands(MedialComplex& mc, double cosBeta, double slack, std::size_t* polygonsRemoved,
+                              std::optional<VertexComponents>* shared) {
   if (polygonsRemoved) *polygonsRemoved = 0;
   const std::size_t nv = mc.vertices.size();
   if (nv == 0 || mc.polygonCount() == 0 || !(cosBeta > 0)) return 0;
-  const Components comps(mc);
+  std::optional<VertexComponents> local;
+  const VertexComponents& comps = componentsOf(mc, shared, local);
   const std::vector<std::uint8_t> attached =
-      rootsWithPolygon(mc, comps, [](PolygonProvenance p) { return p != PolygonProvenance::DelaunayEdgeFacet; });
-  std::vector<std::uint8_t> drop(nv, 0);
+      componentsWithPolygon(mc, comps, [](PolygonProvenance p) { return p != PolygonProvenance::DelaunayEdgeFacet; });
+  std::vector<std::uint8_t> drop(comps.count, 0);
   bool anyCandidate = false;
-  for (std::size_t v = 0; v < nv; ++v) {
-    const Index root = comps.root[v];
-    if (root != comps.keepRoot && !attached[root]) {
-      drop[root] = 1;
-      anyCandidate = true;
-    }
+  for (Index c = 0; c < comps.count; ++c) {
+    drop[c] = c != comps.largest && !attached[c];
+    anyCandidate = anyCandidate || drop[c];
   }
   if (!anyCandidate) return 0;  // no tree over the main axis (1.3 M vertices on the bottle)
   // r_u - r_v + slack >= cosBeta |u - v|  <=>  |u - v| - r_u / cosBeta <= (slack - r_v) / cosBeta.
   std::vector<BallTree::Ball> balls;
   for (std::size_t v = 0; v < nv; ++v)
-    if (comps.root[v] == comps.keepRoot) balls.push_back({mc.vertices[v], mc.radius[v] / cosBeta});
+    if (comps.ofVertex[v] == comps.largest) balls.push_back({mc.vertices[v], mc.radius[v] / cosBeta});
   const BallTree mainAxis(std::move(balls));
   for (std::size_t v = 0; v < nv; ++v) {
-    const Index root = comps.root[v];
-    if (!drop[root]) continue;
+    const Index c = comps.ofVertex[v];
+    if (!drop[c]) continue;
     const double limit = (slack - mc.radius[v]) / cosBeta;
-    if (!mainAxis.hasGapAtMost(mc.vertices[v], limit)) drop[root] = 0;
+    if (!mainAxis.hasGapAtMost(mc.vertices[v], limit)) drop[c] = 0;
   }
-  return removeComponents(mc, comps, drop, polygonsRemoved);
+  return removeComponents(mc, comps, drop, polygonsRemoved, shared);
 }
 
 }  // namespace cadmedial

@@ -1,6 +1,7 @@
 // Sheets and Betti numbers on hand-built complexes, and the performance budget.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -254,6 +255,57 @@ TEST(Topology, IslandsWhoseBallsNestInTheMainAxisAreDropped) {
   for (Index v : {4, 5, 6}) small.radius[v] = 5;
   EXPECT_EQ(dropNestedIslands(small, cos20, slack, nullptr), 0u);
   EXPECT_EQ(small.polygonCount(), 3u);
+}
+
+TEST(Topology, ComponentsAreNumberedByRootAndTheFirstLargestIsKept) {
+  // Two components of one polygon each: equal polygon counts, so the one
+  // kept is the first by its union-find root, as when the rules indexed
+  // per-vertex arrays by root.
+  const MedialComplex mc = complexOf(6, {{3, 4, 5}, {0, 1, 2}});
+  const VertexComponents c = vertexComponents(mc);
+  ASSERT_EQ(c.count, 2u);
+  EXPECT_EQ(c.ofVertex[0], c.ofVertex[2]);
+  EXPECT_EQ(c.ofVertex[3], c.ofVertex[5]);
+  EXPECT_NE(c.ofVertex[0], c.ofVertex[3]);
+  EXPECT_EQ(c.ofVertex[0], 0u);  // roots 0 (or 1, 2) < 3: numbered first
+  EXPECT_EQ(c.largest, 0u);
+  EXPECT_EQ(c.ofPolygon(mc, 0), c.ofVertex[3]);
+
+  // Component A (0-3) and B (4-6) and a one-point island C (7-9).
+  const MedialComplex three = complexOf(10, {{4, 5, 6}, {0, 1, 2}, {0, 2, 3}, {7, 8, 9}});
+  const VertexComponents d = vertexComponents(three);
+  EXPECT_EQ(d.count, 3u);
+  EXPECT_EQ(d.largest, d.ofVertex[0]);  // the one with two polygons
+}
+
+TEST(Topology, IslandRulesShareComponentsUntilOneRemovesPolygons) {
+  // A (0-3, radius 1), a one-point island B (4-6) and a small-ball island
+  // C (7-9): the point rule drops B and must empty the shared components
+  // (the vertices are renumbered); the radius rule then drops C.
+  auto build = [] {
+    MedialComplex mc = complexOf(10, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {7, 8, 9}});
+    for (Index v : {4, 5, 6}) mc.vertices[v] = {10, 0, 0};
+    for (Index v : {7, 8, 9}) mc.radius[v] = 0.1;
+    return mc;
+  };
+  MedialComplex shared = build();
+  std::optional<VertexComponents> components;
+  EXPECT_EQ(dropForcedOnlyIslands(shared, nullptr, &components), 0u);
+  ASSERT_TRUE(components.has_value());  // kept for the next rule
+  EXPECT_EQ(components->count, 3u);
+  EXPECT_EQ(dropPointIslands(shared, 1e-9, nullptr, &components), 1u);
+  EXPECT_FALSE(components.has_value());  // stale after the removal
+  EXPECT_EQ(dropSubResolutionIslands(shared, 0.5, nullptr, &components), 1u);
+  EXPECT_EQ(dropNestedIslands(shared, 0.94, 0.01, nullptr, &components), 0u);
+  ASSERT_TRUE(components.has_value());
+  EXPECT_EQ(components->count, 1u);
+
+  MedialComplex alone = build();  // the same rules, each finding its own
+  EXPECT_EQ(dropPointIslands(alone, 1e-9, nullptr), 1u);
+  EXPECT_EQ(dropSubResolutionIslands(alone, 0.5, nullptr), 1u);
+  EXPECT_EQ(alone.vertices, shared.vertices);
+  EXPECT_EQ(alone.polygonVertices, shared.polygonVertices);
+  EXPECT_EQ(alone.vertices.size(), 4u);
 }
 
 TEST(Topology, CoincidentVoronoiVerticesAreWeldedIntoOne) {

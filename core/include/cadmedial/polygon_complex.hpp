@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "cadmedial/delaunay.hpp"
@@ -67,26 +68,46 @@ MedialComplex buildInnerComplex(const DelaunayVoronoi& dv, const SampleSet& samp
 // facet_holes.cpp); returns how many. Call before buildComplexEdges.
 std::size_t fillSingleFacetHoles(const DelaunayVoronoi& dv, const SelectedFacets& selected, MedialComplex& complex);
 
+// The connected components of a complex's vertices (joined through
+// polygons), numbered 0 .. count-1, and the one with the most polygons,
+// which the island rules below never drop.
+struct VertexComponents {
+  std::vector<Index> ofVertex;
+  Index count = 0;
+  Index largest = 0;
+  Index ofPolygon(const MedialComplex& complex, std::size_t p) const {
+    return ofVertex[complex.polygonVertices[complex.polygonOffsets[p]]];
+  }
+};
+VertexComponents vertexComponents(const MedialComplex& complex);
+
+// The island rules below: each finds the complex's components unless
+// `shared` holds them already, and leaves them there, so consecutive rules
+// on one complex find them once; a rule that removes polygons empties it.
+
 // Removes every connected component whose largest medial radius is below
 // minRadius and which has no forced triangle, except the component with the
 // most polygons, and drops the vertices no polygon uses any more (see
 // small_islands.cpp).
 // Returns the number of components removed; *polygonsRemoved their polygons.
-std::size_t dropSubResolutionIslands(MedialComplex& complex, double minRadius, std::size_t* polygonsRemoved);
+std::size_t dropSubResolutionIslands(MedialComplex& complex, double minRadius, std::size_t* polygonsRemoved,
+                                     std::optional<VertexComponents>* shared = nullptr);
 
 // Removes every connected component, except the one with the most polygons,
 // whose vertices all lie in a box no wider than `tolerance` (zero-size
 // polygons at the common centre of cospherical samples, see
 // small_islands.cpp), and the vertices no polygon uses any more.
 // Returns the number of components removed; *polygonsRemoved their polygons.
-std::size_t dropPointIslands(MedialComplex& complex, double tolerance, std::size_t* polygonsRemoved);
+std::size_t dropPointIslands(MedialComplex& complex, double tolerance, std::size_t* polygonsRemoved,
+                             std::optional<VertexComponents>* shared = nullptr);
 
 // Removes every connected component, except the one with the most polygons,
 // that has no Voronoi facet (forced triangles only: a feature's completion
 // whose sheet the filter pruned, see small_islands.cpp), and the vertices no
 // polygon uses any more. Returns the number of components removed;
 // *polygonsRemoved their polygons.
-std::size_t dropForcedOnlyIslands(MedialComplex& complex, std::size_t* polygonsRemoved);
+std::size_t dropForcedOnlyIslands(MedialComplex& complex, std::size_t* polygonsRemoved,
+                                  std::optional<VertexComponents>* shared = nullptr);
 
 // Removes every connected component, except the one with the most polygons,
 // that has no forced triangle and whose every vertex v is dominated by a
@@ -94,7 +115,8 @@ std::size_t dropForcedOnlyIslands(MedialComplex& complex, std::size_t* polygonsR
 // nearly nest in the main axis's, see small_islands.cpp), and the vertices no polygon
 // uses any more. Returns the number of components removed; *polygonsRemoved
 // their polygons.
-std::size_t dropNestedIslands(MedialComplex& complex, double cosBeta, double slack, std::size_t* polygonsRemoved);
+std::size_t dropNestedIslands(MedialComplex& complex, double cosBeta, double slack, std::size_t* polygonsRemoved,
+                              std::optional<VertexComponents>* shared = nullptr);
 
 // Joins Voronoi vertices closer than `tolerance` (cospherical samples: one
 // vertex, several cells, circumcenters apart by rounding) into the first of
