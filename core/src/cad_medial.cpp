@@ -15,12 +15,12 @@ MedialResult computeCadMedial(const SampleSet& samples, const MedialParams& para
   return computeCadMedial(dv, samples, params, oracle);
 }
 
-PreparedSamples::PreparedSamples(const SampleSet& samples, bool withCellSides) {
+PreparedSamples::PreparedSamples(const SampleSet& samples, bool withCellSides, const SurfaceMeshStats* surface) {
   Stopwatch watch;
   umbrellas = computeUmbrellaData(samples);
   umbrellaSeconds = watch.seconds();
   watch.restart();
-  if (withCellSides) cellSides = std::make_unique<CellSideInputs>(samples);
+  if (withCellSides) cellSides = std::make_unique<CellSideInputs>(samples, surface);
   cellSideSeconds = watch.seconds();
 }
 

@@ -59,13 +59,16 @@ bool beyondSampledSolid(const DelaunayVoronoi& dv, const SampleSet& samples, Ind
   return false;
 }
 
-CellSideInputs::CellSideInputs(const SampleSet& samples) : CellSideInputs(samples, outwardSampleNormals(samples)) {}
+CellSideInputs::CellSideInputs(const SampleSet& samples, const SurfaceMeshStats* surface)
+    : CellSideInputs(samples, outwardSampleNormals(samples), surface) {}
 
-CellSideInputs::CellSideInputs(const SampleSet& samples, std::vector<Vec3> sampleNormals)
+CellSideInputs::CellSideInputs(const SampleSet& samples, std::vector<Vec3> sampleNormals,
+                               const SurfaceMeshStats* surface)
     : normals(std::move(sampleNormals)) {
   // When the reconstruction is a closed manifold, an exact point-in-mesh test
   // (CGAL AABB tree, ray parity) decides; otherwise the tangent-plane vote.
-  if (!samples.triangles.empty() && checkSurfaceMesh(samples.points, samples.triangles).closedManifold())
+  if (!samples.triangles.empty() &&
+      (surface ? *surface : checkSurfaceMesh(samples.points, samples.triangles)).closedManifold())
     mesh = std::make_unique<SoupTree>(samples);
 }
 

@@ -63,7 +63,7 @@ InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& 
 
   // Refused crossings are remembered to report whether blocking mattered.
   std::vector<Index> refusedTargets;
-  std::vector<Index> stack;
+  std::vector<Index> stack, thirdSample;
   for (Index seed = 0; seed < nf; ++seed) {
     if (!selected.unbounded[seed]) continue;
     ++out.seeds;
@@ -77,6 +77,11 @@ InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& 
       const Index p = selected.edge[f][0], q = selected.edge[f][1];
       const Index* ring = selected.ringBegin(f);
       const Index k = selected.ringSize(f);
+      // The third sample x of each Voronoi edge of the ring first, with the
+      // table slots of px and qx prefetched: the lookups below are cache
+      // misses in a table of millions of facets, and issued together they
+      // overlap (the bottle's walk 0.89 -> 0.78 s, min of 3 runs).
+      thirdSample.resize(k);
       for (Index t = 0; t < k; ++t) {
         // Consecutive cells share the Delaunay triangle p q x (a Voronoi edge).
         const std::array<Index, 4>& a = dv.cellSamples(ring[t]);
@@ -89,6 +94,14 @@ InnerOuterLabels separateInnerOuter(const DelaunayVoronoi& dv, const SampleSet& 
             break;
           }
         }
+        thirdSample[t] = x;
+        if (x != kNoIndex) {
+          selected.lookup.prefetch(p, x);
+          selected.lookup.prefetch(q, x);
+        }
+      }
+      for (Index t = 0; t < k; ++t) {
+        const Index x = thirdSample[t];
         if (x == kNoIndex) continue;  // triangle p q ∞: no other finite edge
         if (!cellSide.empty() &&
             (cellSide[ring[t]] == kCellInside || cellSide[ring[(t + 1) % k]] == kCellInside)) {

@@ -21,7 +21,8 @@ TriangulatedSamples sampleAndTriangulate(const TopoDS_Shape& solid, const Sampli
   });
   if (!triangulation.valid()) throw std::logic_error("sampling did not hand over its points");
   out.sampled.samples.validate();
-  out.prepared = std::make_unique<PreparedSamples>(out.sampled.samples, prepareCellSides);
+  out.prepared =
+      std::make_unique<PreparedSamples>(out.sampled.samples, prepareCellSides, &out.sampled.report.surface);
   out.triangulation = triangulation.get();
   return out;
 }

@@ -11,6 +11,8 @@
 
 #include "cadmedial/delaunay.hpp"
 #include "cadmedial/cell_sides.hpp"
+#include "cadmedial/medial.hpp"
+#include "cadmedial/surface_mesh_checks.hpp"
 #include "cadmedial/reconstruction_sides.hpp"
 #include "synthetic_samples.hpp"
 #include "triangle_reach_grid.hpp"
@@ -202,6 +204,23 @@ TEST(ReconstructionSides, GridDeviationBoundsEveryTriangleWithinItsDeviation) {
   EXPECT_EQ(grid.deviationWithin(CGAL::Bbox_3(500, 500, 500, 501, 501, 501)), 0.0);
   EXPECT_EQ(soup::TriangleReachGrid(triangles).deviationWithin(CGAL::Bbox_3(0, 0, 0, 1, 1, 1)),
             std::numeric_limits<double>::infinity());
+}
+
+// A caller that has checked the reconstruction already (the sampling) passes
+// its check in; the point-in-mesh tree follows that check, not a new one.
+TEST(ReconstructionSides, CellSideInputsFollowTheSurfaceCheckPassedIn) {
+  SamplingOptions options;
+  options.spacing = 0.2;
+  const SampleSet samples = samplePlanarSolid(makeBoxWithSquareHole(), options);
+  const SurfaceMeshStats check = checkSurfaceMesh(samples.points, samples.triangles);
+  ASSERT_TRUE(check.closedManifold());
+  EXPECT_NE(CellSideInputs(samples).mesh, nullptr);
+  EXPECT_NE(CellSideInputs(samples, &check).mesh, nullptr);
+  SurfaceMeshStats open = check;
+  open.boundaryEdges = 1;
+  EXPECT_EQ(CellSideInputs(samples, &open).mesh, nullptr);
+  EXPECT_EQ(PreparedSamples(samples, true, &open).cellSides->mesh, nullptr);
+  EXPECT_NE(PreparedSamples(samples, true, &check).cellSides->mesh, nullptr);
 }
 
 // The link groups do not depend on the deviations: the ones CellSideInputs

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "cadmedial/sample_set.hpp"
@@ -20,42 +21,51 @@ class PairTable {
   void reserve(std::size_t count) {
     std::size_t cap = 16;
     while (cap < 2 * count + 1) cap <<= 1;
-    keys_.assign(cap, kEmpty);
-    values_.assign(cap, kNoIndex);
+    slots_.assign(cap, Slot{});
     mask_ = cap - 1;
     size_ = 0;
   }
 
   // Inserts {a,b} -> value if absent; returns the stored value (the old one if present).
   Index insert(Index a, Index b, Index value) {
-    if (2 * (size_ + 1) > keys_.size()) grow();
-    const std::uint64_t k = key(a, b);
-    std::size_t slot = hash(k) & mask_;
-    while (keys_[slot] != kEmpty) {
-      if (keys_[slot] == k) return values_[slot];
-      slot = (slot + 1) & mask_;
+    if (2 * (size_ + 1) > slots_.size()) grow();
+    if (a > b) std::swap(a, b);
+    std::size_t i = hash(key(a, b)) & mask_;
+    while (!slots_[i].empty()) {
+      if (slots_[i].low == a && slots_[i].high == b) return slots_[i].value;
+      i = (i + 1) & mask_;
     }
-    keys_[slot] = k;
-    values_[slot] = value;
+    slots_[i] = {a, b, value};
     ++size_;
     return value;
   }
 
   Index find(Index a, Index b) const {
-    if (keys_.empty()) return kNoIndex;
-    const std::uint64_t k = key(a, b);
-    std::size_t slot = hash(k) & mask_;
-    while (keys_[slot] != kEmpty) {
-      if (keys_[slot] == k) return values_[slot];
-      slot = (slot + 1) & mask_;
+    if (slots_.empty()) return kNoIndex;
+    if (a > b) std::swap(a, b);
+    std::size_t i = hash(key(a, b)) & mask_;
+    while (!slots_[i].empty()) {
+      if (slots_[i].low == a && slots_[i].high == b) return slots_[i].value;
+      i = (i + 1) & mask_;
     }
     return kNoIndex;
+  }
+
+  // Starts loading {a,b}'s first slot, so that several finds issued after
+  // a few prefetches wait for their cache misses together, not in turn.
+  void prefetch(Index a, Index b) const {
+    if (!slots_.empty()) __builtin_prefetch(&slots_[hash(key(a, b)) & mask_]);
   }
 
   std::size_t size() const { return size_; }
 
  private:
-  static constexpr std::uint64_t kEmpty = ~std::uint64_t(0);
+  // Pair and value side by side: a lookup in a table larger than the cache
+  // costs one miss, where separate key and value arrays cost two.
+  struct Slot {
+    Index low = kNoIndex, high = kNoIndex, value = kNoIndex;
+    bool empty() const { return low == kNoIndex && high == kNoIndex; }
+  };
   static std::uint64_t hash(std::uint64_t x) {
     x ^= x >> 33;
     x *= 0xff51afd7ed558ccdULL;
@@ -65,17 +75,14 @@ class PairTable {
     return x;
   }
   void grow() {
-    std::vector<std::uint64_t> oldKeys;
-    std::vector<Index> oldValues;
-    oldKeys.swap(keys_);
-    oldValues.swap(values_);
-    reserve(oldKeys.empty() ? 8 : oldKeys.size());
-    for (std::size_t i = 0; i < oldKeys.size(); ++i)
-      if (oldKeys[i] != kEmpty) insert(static_cast<Index>(oldKeys[i] >> 32), static_cast<Index>(oldKeys[i]), oldValues[i]);
+    std::vector<Slot> old;
+    old.swap(slots_);
+    reserve(old.empty() ? 8 : old.size());
+    for (const Slot& slot : old)
+      if (!slot.empty()) insert(slot.low, slot.high, slot.value);
   }
 
-  std::vector<std::uint64_t> keys_;
-  std::vector<Index> values_;
+  std::vector<Slot> slots_;
   std::size_t mask_ = 0;
   std::size_t size_ = 0;
 };

@@ -103,9 +103,11 @@ MedialResult computeCadMedial(const DelaunayVoronoi& dv, const SampleSet& sample
 
 // The pipeline's work on the samples alone (umbrella data, cell-side inputs,
 // ~2.5 s at 10^6 samples): it needs no triangulation, so a caller with a
-// second core builds it while the Delaunay runs and passes it in.
+// second core builds it while the Delaunay runs and passes it in. `surface`
+// as for CellSideInputs.
 struct PreparedSamples {
-  explicit PreparedSamples(const SampleSet& samples, bool withCellSides = true);
+  explicit PreparedSamples(const SampleSet& samples, bool withCellSides = true,
+                           const SurfaceMeshStats* surface = nullptr);
   UmbrellaData umbrellas;
   std::unique_ptr<CellSideInputs> cellSides;  // null: built when needed
   double umbrellaSeconds = 0, cellSideSeconds = 0;
