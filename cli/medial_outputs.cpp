@@ -11,12 +11,16 @@
 namespace cadmedial {
 
 void writeMedialFiles(const std::string& dir, const MedialComplex& medial) {
-  // The three files are independent: format and write them side by side
-  // (each is still written to a temporary name and renamed).
-  tbb::parallel_invoke(
-      [&] { writeMedialPlyFile(dir + "/medial.ply", toMedialMesh(medial)); },
-      [&] { writeFileAtomically(dir + "/medial.obj", [&](std::ofstream& out) { writeMedialObj(out, medial); }); },
-      [&] { writeFileAtomically(dir + "/medial.ma", [&](std::ofstream& out) { writeMedialMa(out, medial); }); });
+  // The files are independent: format and write them side by side (each is
+  // still written to a temporary name and renamed). OBJ and .ma share their
+  // vertex lines' numbers; if .ma fails, neither is kept.
+  tbb::parallel_invoke([&] { writeMedialPlyFile(dir + "/medial.ply", toMedialMesh(medial)); },
+                       [&] {
+                         writeFileAtomically(dir + "/medial.obj", [&](std::ofstream& obj) {
+                           writeFileAtomically(dir + "/medial.ma",
+                                               [&](std::ofstream& ma) { writeMedialObjAndMa(obj, ma, medial); });
+                         });
+                       });
 }
 
 }  // namespace cadmedial

@@ -5,8 +5,11 @@
 
 #include "cadmedial/unique_edges.hpp"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -15,28 +18,48 @@ namespace cadmedial {
 
 namespace {
 
-// "x y z" of vertex i then `between` then its radius.
-void appendVertex(std::string& out, const MedialComplex& c, std::size_t i, const char* between) {
+// A vertex's numbers as text, "x y z" and the radius, formatted once for
+// both files (in a fixed buffer: a string would allocate per vertex).
+struct VertexText {
+  char position[3 * 32], radius[32];
+  std::size_t positionLength = 0, radiusLength = 0;
+};
+
+VertexText vertexText(const MedialComplex& c, std::size_t i) {
+  VertexText t;
+  char* at = t.position;
   for (int k = 0; k < 3; ++k) {
-    if (k > 0) out += ' ';
-    appendNumber(out, c.vertices[i][k]);
+    if (k > 0) *at++ = ' ';
+    at = std::to_chars(at, t.position + sizeof t.position, c.vertices[i][k]).ptr;
   }
-  out += between;
-  appendNumber(out, c.radius[i]);
+  t.positionLength = static_cast<std::size_t>(at - t.position);
+  t.radiusLength = static_cast<std::size_t>(std::to_chars(t.radius, t.radius + sizeof t.radius, c.radius[i]).ptr - t.radius);
+  return t;
+}
+
+// OBJ has no radius: it goes in a comment.
+void appendObjVertex(std::string& out, const VertexText& t) {
+  out += "v ";
+  out.append(t.position, t.positionLength);
+  out += " # r ";
+  out.append(t.radius, t.radiusLength);
   out += '\n';
 }
 
-}  // namespace
+void appendMaVertex(std::string& out, const VertexText& t) {
+  out += "v ";
+  out.append(t.position, t.positionLength);
+  out += ' ';
+  out.append(t.radius, t.radiusLength);
+  out += '\n';
+}
 
-void writeMedialObj(std::ostream& stream, const MedialComplex& c) {
-  const std::string header = "# cadmedial inner medial axis: " + std::to_string(c.vertices.size()) + " vertices, " +
-                             std::to_string(c.polygonCount()) + " polygons, " + std::to_string(c.sheetCount) +
-                             " sheets\n";
-  stream << header;
-  writeRecords(stream, c.vertices.size(), [&](std::size_t i, std::string& out) {
-    out += "v ";
-    appendVertex(out, c, i, " # r ");
-  });
+void writeObjHeader(std::ostream& stream, const MedialComplex& c) {
+  stream << "# cadmedial inner medial axis: " + std::to_string(c.vertices.size()) + " vertices, " +
+                std::to_string(c.polygonCount()) + " polygons, " + std::to_string(c.sheetCount) + " sheets\n";
+}
+
+void writeObjPolygons(std::ostream& stream, const MedialComplex& c) {
   // Polygons ordered by sheet so each group is written once.
   std::vector<std::size_t> order(c.polygonCount());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -57,24 +80,34 @@ void writeMedialObj(std::ostream& stream, const MedialComplex& c) {
   });
 }
 
-void writeMedialMa(std::ostream& stream, const MedialComplex& c) {
+// The .ma form's triangles (each polygon fanned from its first vertex) and
+// their distinct edges, numbered in order of first use.
+struct MaMesh {
   std::vector<std::array<Index, 3>> triangles;
+  std::vector<std::array<Index, 2>> edges;
+};
+
+MaMesh maMesh(const MedialComplex& c) {
+  MaMesh m;
   for (std::size_t p = 0; p < c.polygonCount(); ++p) {
     const Index b = c.polygonOffsets[p], e = c.polygonOffsets[p + 1];
     for (Index k = b + 1; k + 1 < e; ++k)
-      triangles.push_back({c.polygonVertices[b], c.polygonVertices[k], c.polygonVertices[k + 1]});
+      m.triangles.push_back({c.polygonVertices[b], c.polygonVertices[k], c.polygonVertices[k + 1]});
   }
   std::vector<std::array<Index, 2>> sides;
-  sides.reserve(3 * triangles.size());
-  for (const auto& t : triangles)
+  sides.reserve(3 * m.triangles.size());
+  for (const auto& t : m.triangles)
     for (int i = 0; i < 3; ++i) sides.push_back({t[i], t[(i + 1) % 3]});
-  const std::vector<std::array<Index, 2>> edges = findUniqueEdges(c.vertices.size(), sides).edges;
-  stream << std::to_string(c.vertices.size()) + ' ' + std::to_string(edges.size()) + ' ' +
-                std::to_string(triangles.size()) + '\n';
-  writeRecords(stream, c.vertices.size(), [&](std::size_t i, std::string& out) {
-    out += "v ";
-    appendVertex(out, c, i, " ");
-  });
+  m.edges = findUniqueEdges(c.vertices.size(), sides).edges;
+  return m;
+}
+
+void writeMaHeader(std::ostream& stream, const MedialComplex& c, const MaMesh& m) {
+  stream << std::to_string(c.vertices.size()) + ' ' + std::to_string(m.edges.size()) + ' ' +
+                std::to_string(m.triangles.size()) + '\n';
+}
+
+void writeMaEdgesAndTriangles(std::ostream& stream, const MaMesh& m) {
   auto appendIndices = [](std::string& out, char tag, const Index* idx, int n) {
     out += tag;
     for (int k = 0; k < n; ++k) {
@@ -83,10 +116,39 @@ void writeMedialMa(std::ostream& stream, const MedialComplex& c) {
     }
     out += '\n';
   };
-  writeRecords(stream, edges.size(),
-               [&](std::size_t i, std::string& out) { appendIndices(out, 'e', edges[i].data(), 2); });
-  writeRecords(stream, triangles.size(),
-               [&](std::size_t i, std::string& out) { appendIndices(out, 'f', triangles[i].data(), 3); });
+  writeRecords(stream, m.edges.size(),
+               [&](std::size_t i, std::string& out) { appendIndices(out, 'e', m.edges[i].data(), 2); });
+  writeRecords(stream, m.triangles.size(),
+               [&](std::size_t i, std::string& out) { appendIndices(out, 'f', m.triangles[i].data(), 3); });
+}
+
+}  // namespace
+
+void writeMedialObj(std::ostream& stream, const MedialComplex& c) {
+  writeObjHeader(stream, c);
+  writeRecords(stream, c.vertices.size(),
+               [&](std::size_t i, std::string& out) { appendObjVertex(out, vertexText(c, i)); });
+  writeObjPolygons(stream, c);
+}
+
+void writeMedialMa(std::ostream& stream, const MedialComplex& c) {
+  const MaMesh m = maMesh(c);
+  writeMaHeader(stream, c, m);
+  writeRecords(stream, c.vertices.size(),
+               [&](std::size_t i, std::string& out) { appendMaVertex(out, vertexText(c, i)); });
+  writeMaEdgesAndTriangles(stream, m);
+}
+
+void writeMedialObjAndMa(std::ostream& obj, std::ostream& ma, const MedialComplex& c) {
+  const MaMesh m = maMesh(c);
+  writeObjHeader(obj, c);
+  writeMaHeader(ma, c, m);
+  writeRecordsTo<2>({&obj, &ma}, c.vertices.size(), [&](std::size_t i, std::array<std::string, 2>& texts) {
+    const VertexText t = vertexText(c, i);
+    appendObjVertex(texts[0], t);
+    appendMaVertex(texts[1], t);
+  });
+  tbb::parallel_invoke([&] { writeObjPolygons(obj, c); }, [&] { writeMaEdgesAndTriangles(ma, m); });
 }
 
 }  // namespace cadmedial

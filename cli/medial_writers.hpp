@@ -17,4 +17,8 @@ void writeMedialObj(std::ostream& out, const MedialComplex& complex);
 // "f i j k" lines (0-based).
 void writeMedialMa(std::ostream& out, const MedialComplex& complex);
 
+// Both at once, as the CLI writes them: each vertex's numbers are formatted
+// once for the two files' vertex lines.
+void writeMedialObjAndMa(std::ostream& obj, std::ostream& ma, const MedialComplex& complex);
+
 }  // namespace cadmedial
