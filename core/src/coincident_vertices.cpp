@@ -11,10 +11,14 @@
 // not a slit (below): it drops no polygon that alone holds what it spans,
 // and it keeps no group of welds that adds cycles.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include "cadmedial/edge_table.hpp"
 #include "cadmedial/polygon_complex.hpp"
@@ -27,6 +31,20 @@ namespace {
 std::size_t distinctCount(std::vector<std::uint64_t>& keys) {
   std::sort(keys.begin(), keys.end());
   return static_cast<std::size_t>(std::unique(keys.begin(), keys.end()) - keys.begin());
+}
+
+// Whether `cycle` has at least three distinct corners (distinctCount >= 3
+// without a copy and a sort per polygon).
+bool hasThreeDistinct(const std::vector<Index>& cycle) {
+  if (cycle.size() < 3) return false;
+  const Index a = cycle[0];
+  Index b = kNoIndex;
+  for (Index v : cycle) {
+    if (v == a || v == b) continue;
+    if (b != kNoIndex) return true;
+    b = v;
+  }
+  return false;
 }
 
 // A welded polygon's corners as one cycle, without a corner repeating the
@@ -252,7 +270,10 @@ std::size_t weldCoincidentVertices(MedialComplex& mc, double tolerance, std::siz
     if (mc.vertexCell[v] == kNoIndex || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
     order.push_back({ux * p[0] + uy * p[1] + uz * p[2], v});
   }
-  std::sort(order.begin(), order.end());
+  // (along, vertex) is a strict order, so the parallel sort gives the one order.
+  tbb::parallel_sort(order.begin(), order.end());
+  // Pairs are joined as they are found: all Voronoi vertices of a sphere's
+  // samples are one point, and storing their pairs (k^2 / 2) would not fit.
   UnionFind clusters(nv);
   const double limit = tolerance * tolerance;
   constexpr double kRounding = 16 * std::numeric_limits<double>::epsilon();  // of a projection, relative to |p|_1
@@ -288,22 +309,43 @@ std::size_t weldCoincidentVertices(MedialComplex& mc, double tolerance, std::siz
   // only polygons on a welded point can become equal).
   std::vector<Index> members(nv, 0);
   for (Index v = 0; v < nv; ++v) ++members[into[v]];
-  std::vector<Index> vertices, cycle;
-  std::vector<Index> offsets{0};
-  std::vector<std::uint8_t> keep(mc.polygonCount(), 1);
-  std::vector<std::uint64_t> distinct;
-  std::vector<std::pair<std::vector<Index>, Index>> onWeldedPoints;  // canonical cycle, polygon
-  for (std::size_t p = 0; p < mc.polygonCount(); ++p) {
-    weldedCycle(mc, p, into, cycle);
-    vertices.insert(vertices.end(), cycle.begin(), cycle.end());
-    offsets.push_back(static_cast<Index>(vertices.size()));
-    distinct.assign(cycle.begin(), cycle.end());
-    if (distinctCount(distinct) < 3) {
-      keep[p] = 0;
-      if (facetsDropped && mc.provenance[p] == PolygonProvenance::DelaunayEdgeFacet) ++*facetsDropped;
-    } else if (std::any_of(cycle.begin(), cycle.end(), [&](Index v) { return members[v] > 1; })) {
-      onWeldedPoints.push_back({canonicalCycle(cycle), static_cast<Index>(p)});
+  const std::size_t np = mc.polygonCount();
+  std::vector<std::uint8_t> keep(np, 1);
+  std::vector<Index> offsets(np + 1, 0);  // first the new corner counts, then their sums
+  // Polygons in parallel blocks; per block the Voronoi facets it drops and
+  // its polygons on a welded point (canonical cycle, polygon).
+  struct Block {
+    std::size_t facetsDropped = 0;
+    std::vector<std::pair<std::vector<Index>, Index>> onWeldedPoints;
+  };
+  constexpr std::size_t kBlock = 16384;
+  std::vector<Block> blocks((np + kBlock - 1) / kBlock);
+  tbb::parallel_for(std::size_t(0), blocks.size(), [&](std::size_t b) {
+    std::vector<Index> cycle;
+    for (std::size_t p = b * kBlock; p < std::min(np, (b + 1) * kBlock); ++p) {
+      weldedCycle(mc, p, into, cycle);
+      offsets[p + 1] = static_cast<Index>(cycle.size());
+      if (!hasThreeDistinct(cycle)) {
+        keep[p] = 0;
+        if (mc.provenance[p] == PolygonProvenance::DelaunayEdgeFacet) ++blocks[b].facetsDropped;
+      } else if (std::any_of(cycle.begin(), cycle.end(), [&](Index v) { return members[v] > 1; })) {
+        blocks[b].onWeldedPoints.push_back({canonicalCycle(cycle), static_cast<Index>(p)});
+      }
     }
+  });
+  for (std::size_t p = 0; p < np; ++p) offsets[p + 1] += offsets[p];
+  std::vector<Index> vertices(offsets[np]);
+  tbb::parallel_for(std::size_t(0), blocks.size(), [&](std::size_t b) {
+    std::vector<Index> cycle;
+    for (std::size_t p = b * kBlock; p < std::min(np, (b + 1) * kBlock); ++p) {
+      weldedCycle(mc, p, into, cycle);
+      std::copy(cycle.begin(), cycle.end(), vertices.begin() + offsets[p]);
+    }
+  });
+  std::vector<std::pair<std::vector<Index>, Index>> onWeldedPoints;
+  for (Block& block : blocks) {
+    if (facetsDropped) *facetsDropped += block.facetsDropped;
+    for (auto& entry : block.onWeldedPoints) onWeldedPoints.push_back(std::move(entry));
   }
   std::sort(onWeldedPoints.begin(), onWeldedPoints.end());
   for (std::size_t i = 1; i < onWeldedPoints.size(); ++i)

@@ -47,9 +47,6 @@ SpacingSources::~SpacingSources() = default;
 // The minimum is over every source; nodes are skipped only when their bound,
 // computed with the same steps on numbers no larger (grading >= 0), is
 // already >= the best, so the answer is that of a scan of all sources.
-// The minimum is over every source; nodes are skipped only when their bound,
-// computed with the same steps on numbers no larger (grading >= 0), is
-// already >= the best, so the answer is that of a scan of all sources.
 double SpacingSources::allowedNear(const gp_Pnt& p, double slack, double upTo) const {
   const Vec3 q{p.X(), p.Y(), p.Z()};
   auto graded = [&](double spacing, double squared) {

@@ -260,16 +260,22 @@ TEST(Topology, IslandsWhoseBallsNestInTheMainAxisAreDropped) {
 TEST(Topology, ComponentsAreNumberedByRootAndTheFirstLargestIsKept) {
   // Two components of one polygon each: equal polygon counts, so the one
   // kept is the first by its union-find root, as when the rules indexed
-  // per-vertex arrays by root.
-  const MedialComplex mc = complexOf(6, {{3, 4, 5}, {0, 1, 2}});
+  // per-vertex arrays by root. The union joins each corner to the first
+  // (union by size, the first on a tie), so {7, 6, 1} has root 7 though its
+  // smallest vertex 1 comes before {2, 3, 4}'s root 2: numbered by smallest
+  // vertex, the other component would be kept.
+  const MedialComplex mc = complexOf(8, {{7, 6, 1}, {2, 3, 4}});
   const VertexComponents c = vertexComponents(mc);
-  ASSERT_EQ(c.count, 2u);
-  EXPECT_EQ(c.ofVertex[0], c.ofVertex[2]);
-  EXPECT_EQ(c.ofVertex[3], c.ofVertex[5]);
-  EXPECT_NE(c.ofVertex[0], c.ofVertex[3]);
-  EXPECT_EQ(c.ofVertex[0], 0u);  // roots 0 (or 1, 2) < 3: numbered first
-  EXPECT_EQ(c.largest, 0u);
-  EXPECT_EQ(c.ofPolygon(mc, 0), c.ofVertex[3]);
+  ASSERT_EQ(c.count, 4u);  // and the unused vertices 0 and 5
+  EXPECT_EQ(c.ofVertex[1], c.ofVertex[7]);
+  EXPECT_EQ(c.ofVertex[2], c.ofVertex[4]);
+  EXPECT_NE(c.ofVertex[1], c.ofVertex[2]);
+  EXPECT_EQ(c.ofVertex[0], 0u);
+  EXPECT_EQ(c.ofVertex[2], 1u);  // root 2
+  EXPECT_EQ(c.ofVertex[5], 2u);
+  EXPECT_EQ(c.ofVertex[1], 3u);  // root 7
+  EXPECT_EQ(c.largest, c.ofVertex[2]);
+  EXPECT_EQ(c.ofPolygon(mc, 0), c.ofVertex[7]);
 
   // Component A (0-3) and B (4-6) and a one-point island C (7-9).
   const MedialComplex three = complexOf(10, {{4, 5, 6}, {0, 1, 2}, {0, 2, 3}, {7, 8, 9}});
@@ -385,6 +391,33 @@ TEST(Topology, PolygonsTheWeldMakesEqualAreKeptOnce) {
   quads.vertices[5] = {quads.vertices[3][0], quads.vertices[3][1], quads.vertices[3][2] + 1e-14};
   EXPECT_EQ(weldCoincidentVertices(quads, 1e-9), 2u);
   EXPECT_EQ(quads.polygonCount(), 3u);
+}
+
+TEST(Topology, WeldRewritesPolygonsAcrossBlocks) {
+  // The weld rewrites polygons in parallel blocks of 16384: a pillow whose
+  // two triangles are in different blocks (1 and 18000) is still found,
+  // the later one goes, and every other polygon keeps its corners in order.
+  const std::size_t n = 20000;
+  std::vector<std::vector<Index>> polygons;
+  for (std::size_t t = 0; t < n; ++t) {
+    const Index a = static_cast<Index>(3 * t);
+    polygons.push_back({a, a + 1, a + 2});
+  }
+  const Index extra = static_cast<Index>(3 * n);
+  polygons[18000] = {3, 5, extra};  // on 1's edge 3-5; `extra` coincides with 4
+  MedialComplex mc = complexOf(3 * n + 1, polygons);
+  mc.vertices[extra] = {mc.vertices[4][0], mc.vertices[4][1] + 1e-14, mc.vertices[4][2]};
+  std::size_t dropped = 0;
+  EXPECT_EQ(weldCoincidentVertices(mc, 1e-9, &dropped), 1u);
+  EXPECT_EQ(dropped, 1u);
+  ASSERT_EQ(mc.polygonCount(), n - 1);
+  EXPECT_EQ(mc.vertices.size(), 3 * n - 3);  // extra welded; 18000's own corners unused
+  for (std::size_t p = 0; p < mc.polygonCount(); ++p) {
+    ASSERT_EQ(mc.polygonSize(p), 3);
+    const std::size_t old = p < 18000 ? p : p + 1;
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(mc.vertices[mc.polygonVertices[mc.polygonOffsets[p] + k]][0], double(3 * old + k)) << p;
+  }
 }
 
 TEST(Topology, CoincidentVerticesAreFoundWhateverLineTheyLieOn) {

@@ -40,7 +40,7 @@ class BallTree {
   double minGap(const Vec3& p, double stopAt, double skipWithin = -1) const {
     double best = std::numeric_limits<double>::infinity();
     tree_.search([&](const Tree::Node& node) { return bound(node, p); },
-                 [&](double nodeBound) { return nodeBound < best; },
+                 [&](double nodeBound) { return !(nodeBound >= best); },  // a NaN bound is searched, as before
                  [&](const Ball& ball) {
                    const double d = distance(p, ball.centre);
                    if (d < skipWithin) return false;

@@ -22,6 +22,10 @@
 
 namespace cadmedial {
 
+// Positions are expected finite: a node's box starts at its first item's
+// position, so a NaN there makes the node's bound NaN, and `open` decides
+// whether such a node is searched.
+//
 // Traits: `static const Vec3& position(const Item&)`, `static double
 // value(const Item&)`, `static double merge(double, double)` (associative,
 // e.g. max or min) and `static constexpr double kNoValue` (merge's identity
