@@ -37,22 +37,17 @@ VertexText vertexText(const MedialComplex& c, std::size_t i) {
   return t;
 }
 
-// OBJ has no radius: it goes in a comment.
-void appendObjVertex(std::string& out, const VertexText& t) {
+// "v x y z" then `between` then the radius. OBJ has no radius: it goes in
+// a comment (between = " # r "); .ma has it as a fifth number (" ").
+void appendVertexLine(std::string& out, const VertexText& t, const char* between) {
   out += "v ";
   out.append(t.position, t.positionLength);
-  out += " # r ";
+  out += between;
   out.append(t.radius, t.radiusLength);
   out += '\n';
 }
-
-void appendMaVertex(std::string& out, const VertexText& t) {
-  out += "v ";
-  out.append(t.position, t.positionLength);
-  out += ' ';
-  out.append(t.radius, t.radiusLength);
-  out += '\n';
-}
+constexpr const char* kObjRadius = " # r ";
+constexpr const char* kMaRadius = " ";
 
 void writeObjHeader(std::ostream& stream, const MedialComplex& c) {
   stream << "# cadmedial inner medial axis: " + std::to_string(c.vertices.size()) + " vertices, " +
@@ -127,7 +122,7 @@ void writeMaEdgesAndTriangles(std::ostream& stream, const MaMesh& m) {
 void writeMedialObj(std::ostream& stream, const MedialComplex& c) {
   writeObjHeader(stream, c);
   writeRecords(stream, c.vertices.size(),
-               [&](std::size_t i, std::string& out) { appendObjVertex(out, vertexText(c, i)); });
+               [&](std::size_t i, std::string& out) { appendVertexLine(out, vertexText(c, i), kObjRadius); });
   writeObjPolygons(stream, c);
 }
 
@@ -135,7 +130,7 @@ void writeMedialMa(std::ostream& stream, const MedialComplex& c) {
   const MaMesh m = maMesh(c);
   writeMaHeader(stream, c, m);
   writeRecords(stream, c.vertices.size(),
-               [&](std::size_t i, std::string& out) { appendMaVertex(out, vertexText(c, i)); });
+               [&](std::size_t i, std::string& out) { appendVertexLine(out, vertexText(c, i), kMaRadius); });
   writeMaEdgesAndTriangles(stream, m);
 }
 
@@ -145,8 +140,8 @@ void writeMedialObjAndMa(std::ostream& obj, std::ostream& ma, const MedialComple
   writeMaHeader(ma, c, m);
   writeRecordsTo<2>({&obj, &ma}, c.vertices.size(), [&](std::size_t i, std::array<std::string, 2>& texts) {
     const VertexText t = vertexText(c, i);
-    appendObjVertex(texts[0], t);
-    appendMaVertex(texts[1], t);
+    appendVertexLine(texts[0], t, kObjRadius);
+    appendVertexLine(texts[1], t, kMaRadius);
   });
   tbb::parallel_invoke([&] { writeObjPolygons(obj, c); }, [&] { writeMaEdgesAndTriangles(ma, m); });
 }

@@ -334,6 +334,8 @@ std::size_t weldCoincidentVertices(MedialComplex& mc, double tolerance, std::siz
     }
   });
   for (std::size_t p = 0; p < np; ++p) offsets[p + 1] += offsets[p];
+  // Each polygon's cycle is made again here: cheaper than keeping every
+  // block's corners until the sums are known.
   std::vector<Index> vertices(offsets[np]);
   tbb::parallel_for(std::size_t(0), blocks.size(), [&](std::size_t b) {
     std::vector<Index> cycle;
